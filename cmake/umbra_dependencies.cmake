@@ -1,0 +1,24 @@
+# Every dependency comes from a Debian package (scripts/install-deps.sh).
+find_package(CGAL REQUIRED)
+find_package(OpenMesh CONFIG REQUIRED)  # CONFIG: CGAL ships a FindOpenMesh that fails here
+find_package(OpenImageIO REQUIRED)
+find_package(glm REQUIRED)
+find_package(nlohmann_json REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(fmt REQUIRED)
+find_package(Threads REQUIRED)
+if(UMBRA_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+
+# Debian 12's OpenImageIO config lists /usr/include/opencv4 among its include
+# directories although umbra's headers never need OpenCV; without
+# libopencv-dev installed, CMake refuses the target. Drop the missing paths.
+get_target_property(_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+set(_oiio_existing)
+foreach(_dir IN LISTS _oiio_includes)
+  if(EXISTS "${_dir}")
+    list(APPEND _oiio_existing "${_dir}")
+  endif()
+endforeach()
+set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_existing}")

@@ -1,0 +1,27 @@
+#pragma once
+// Sample rays exactly as DESIGN.md defines them; shared by every render
+// method and by the validator, so that all of them look at the same points.
+#include <geometry/scene.h>
+
+namespace umbra::geometry {
+
+/// The ray eye + t·direction through the centre of pixel (i, j), i from the
+/// left, j from the top. `direction` is not unit length. Both are computed in
+/// IEEE doubles in DESIGN.md's order and are then taken as exact values.
+struct SampleRay {
+  Vec3 origin;
+  Vec3 direction;
+};
+
+/// The camera frame of DESIGN.md: forward f, right r, up u, and the scale
+/// factors h = tan(fov/2) and a = width / height.
+struct CameraFrame {
+  Vec3 eye, f, r, u;
+  double h = 0, a = 0;
+  int width = 0, height = 0;
+};
+
+CameraFrame camera_frame(const Camera& camera);
+SampleRay sample_ray(const CameraFrame& frame, int i, int j);
+
+}  // namespace umbra::geometry

@@ -1,0 +1,64 @@
+#pragma once
+// The scene as every part of umbra sees it after loading: world-space
+// coordinates (transforms already applied, in doubles), validated values.
+// Field meanings follow ../shared/DESIGN.md and docs/scene-format.md.
+#include <geometry/vec3.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace umbra::geometry {
+
+struct Rgb {
+  double r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb&, const Rgb&) = default;
+};
+
+struct Camera {
+  Vec3 eye{0, 0, 1};
+  Vec3 look_at{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  double fov_y_deg = 40;
+  int width = 640;
+  int height = 480;
+};
+
+enum class LightType { point, directional };
+
+/// Bergeron's light: full intensity up to dec_begin, then
+/// ((light_end - d) / (light_end - dec_begin))^decrease, zero from light_end on.
+/// A light without light_end is unlimited and never falls off.
+struct Light {
+  LightType type = LightType::point;
+  Vec3 position;   ///< point lights: where the light is
+  Vec3 direction;  ///< directional lights: the direction light travels (not normalized)
+  Rgb intensity{1, 1, 1};
+  double dec_begin = 0;
+  std::optional<double> light_end;
+  int decrease = 1;
+};
+
+/// One polygon: indices into its model's vertex list, in the file's order.
+/// Its front side is the one from which the vertices run counter-clockwise.
+using Polygon = std::vector<std::uint32_t>;
+
+struct Model {
+  std::string name;
+  std::vector<Vec3> vertices;  ///< world space
+  std::vector<Polygon> polygons;
+  Rgb color{0.8, 0.8, 0.8};
+  bool casts_shadows = true;
+};
+
+struct Scene {
+  Camera camera;
+  Rgb ambient{0.08, 0.08, 0.08};
+  std::vector<Light> lights;
+  std::vector<Model> models;
+  std::filesystem::path source;  ///< the file it was read from (for messages)
+};
+
+}  // namespace umbra::geometry

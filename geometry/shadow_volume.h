@@ -1,0 +1,60 @@
+#pragma once
+// Shadow volumes as plain values: what geometry/ hands to raster/ and to the
+// exporters. No CGAL types cross this header.
+#include <geometry/vec3.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace umbra::geometry {
+
+/// Bergeron's closing types.
+enum class ShadowPolygonType : std::uint8_t {
+  model_cap = 1,      ///< type 1: a polygon of the model (near end)
+  side = 2,           ///< type 2: extruded from a contour edge, away from the light
+  projected_cap = 3,  ///< type 3: the model projected to the far end
+};
+
+/// One face of a light's shadow volume.
+///
+/// `nb_c` is view-independent: it is the count added when the face is crossed
+/// from the side on which `vertices` run counter-clockwise (the side its
+/// right-handed normal points to); crossing from the other side adds -nb_c.
+/// A renderer turns it into Bergeron's view-dependent Nb_C by asking from
+/// which side the eye ray crosses.
+///
+/// A side polygon (type 2) of edge (a, b) of a point light L has the
+/// vertices a, b, b', a' with x' = x + k·(x - L) for one k > 0 per volume; its
+/// exact support is the plane through L, a and b, and decisions are taken
+/// on that ideal geometry (a, b, L, k), not on the rounded far vertices.
+/// For a directional light travelling along D, x' = x + k·D.
+struct ShadowPolygon {
+  std::vector<Vec3> vertices;
+  std::uint32_t light = 0;
+  std::uint32_t model = 0;
+  std::uint32_t polygon = 0;  ///< source polygon within its model
+  /// type 2: the contour edge is polygon's edge (edge, edge + 1 mod n).
+  std::uint32_t edge = 0;
+  ShadowPolygonType type = ShadowPolygonType::side;
+  std::int8_t nb_c = 0;
+  bool twisted = false;
+};
+
+/// Contour-edge statistics of one light's volumes.
+struct VolumeStats {
+  std::uint32_t light = 0;
+  std::uint64_t contour_edges = 0;
+  std::uint64_t boundary_contour_edges = 0;   ///< |Nb_C| = 1
+  std::uint64_t silhouette_contour_edges = 0; ///< |Nb_C| = 2 (or more, non-manifold)
+  std::uint64_t side_polygons = 0;
+  std::uint64_t crow_all_edges_polygons = 0;  ///< Crow's baseline: one per edge of every polygon
+};
+
+struct ShadowVolumes {
+  std::vector<ShadowPolygon> polygons;
+  std::vector<VolumeStats> stats;  ///< one per light
+  /// The extrusion factor k of each light (see ShadowPolygon).
+  std::vector<double> extrusion;
+};
+
+}  // namespace umbra::geometry

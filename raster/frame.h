@@ -1,0 +1,40 @@
+#pragma once
+// What every render method produces: the beauty pass and the AOVs of
+// DESIGN.md, as plain buffers, row-major from the top-left pixel.
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace umbra::raster {
+
+/// Values of the `shadow.<i>` AOV.
+inline constexpr float kShadowLit = 1.0f;
+inline constexpr float kShadowShadowed = 0.0f;
+inline constexpr float kShadowOutOfRange = 0.5f;
+/// `depth` of a pixel whose ray hits nothing.
+inline constexpr float kDepthBackground = std::numeric_limits<float>::infinity();
+
+struct Frame {
+  int width = 0;
+  int height = 0;
+  std::vector<float> beauty;               ///< linear RGB, 3 floats a pixel
+  std::vector<std::vector<float>> shadow;  ///< per light: kShadowLit / Shadowed / OutOfRange
+  std::vector<std::vector<float>> count;   ///< per light: the final depth count
+  /// Distance from the eye to the visible point along the sample ray
+  /// (t·|d|); kDepthBackground where the ray hits nothing.
+  std::vector<float> depth;
+
+  Frame() = default;
+  Frame(int w, int h, std::size_t lights)
+      : width(w), height(h),
+        beauty(static_cast<std::size_t>(w) * h * 3, 0.0f),
+        shadow(lights, std::vector<float>(static_cast<std::size_t>(w) * h, kShadowLit)),
+        count(lights, std::vector<float>(static_cast<std::size_t>(w) * h, 0.0f)),
+        depth(static_cast<std::size_t>(w) * h, kDepthBackground) {}
+
+  std::size_t pixel(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }
+  std::size_t lights() const { return shadow.size(); }
+};
+
+}  // namespace umbra::raster

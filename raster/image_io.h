@@ -1,0 +1,33 @@
+#pragma once
+// The one file that touches image files (through OpenImageIO).
+#include <raster/frame.h>
+
+#include <filesystem>
+#include <vector>
+
+namespace umbra::raster {
+
+/// Writes `frame` by the path's extension: `.png` the beauty pass
+/// (sRGB-encoded, 8 bits); `.exr` the beauty pass (R, G, B) and every AOV
+/// (`shadow.<i>`, `count.<i>`, `depth`) as float channels of one image.
+/// The file appears whole or not at all (written beside it, then renamed).
+/// Throws geometry::InputError naming the path on an unknown extension or a
+/// write failure.
+void write_frame(const Frame& frame, const std::filesystem::path& path);
+
+/// The AOVs that validate needs, read back from an EXR written by write_frame
+/// (channels found by name). Throws geometry::InputError when the file cannot
+/// be read or has no `shadow.0`.
+struct ShadowChannels {
+  int width = 0;
+  int height = 0;
+  std::vector<std::vector<float>> shadow;  ///< shadow.0, shadow.1, ... in order
+};
+ShadowChannels read_shadow_channels(const std::filesystem::path& path);
+
+/// Writes an 8-bit RGB PNG from 3 floats a pixel in [0, 1], written as they are
+/// (no gamma). Same atomicity and errors as write_frame.
+void write_rgb_png(const std::filesystem::path& path, int width, int height,
+                   const std::vector<float>& rgb);
+
+}  // namespace umbra::raster

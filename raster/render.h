@@ -1,0 +1,28 @@
+#pragma once
+// One entry point for every render method.
+#include <geometry/scene.h>
+#include <raster/frame.h>
+
+namespace umbra::raster {
+
+enum class Method { volume, exact };
+
+struct RenderOptions {
+  Method method = Method::volume;
+  unsigned threads = 0;  ///< 0: all hardware threads
+};
+
+struct RenderStats {
+  double seconds_volumes = 0;
+  double seconds_raster = 0;
+  double seconds_exact_fallback = 0;
+  std::uint64_t contour_edges = 0;
+  std::uint64_t shadow_polygons = 0;
+  std::uint64_t exact_fallback_pixels = 0;
+  std::uint64_t pixels = 0;
+};
+
+Frame render(const geometry::Scene& scene, const RenderOptions& options,
+             RenderStats* stats = nullptr);
+
+}  // namespace umbra::raster

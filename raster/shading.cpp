@@ -1,0 +1,51 @@
+#include <raster/shading.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace umbra::raster {
+
+using geometry::Light;
+using geometry::LightType;
+using geometry::Rgb;
+using geometry::Vec3;
+
+double light_falloff(const Light& light, double distance) {
+  if (light.type == LightType::directional || !light.light_end) return 1.0;
+  const double end = *light.light_end;
+  if (distance >= end) return 0.0;
+  if (distance <= light.dec_begin) return 1.0;
+  // dec_begin < distance < end, so end - dec_begin > 0 here.
+  return std::pow((end - distance) / (end - light.dec_begin), light.decrease);
+}
+
+Rgb shade(const geometry::Scene& scene, const Rgb& color, const Vec3& point, const Vec3& normal,
+          const std::vector<bool>& lit) {
+  Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    if (!lit[i]) continue;
+    const Light& light = scene.lights[i];
+    Vec3 to_light;
+    double factor = 1.0;
+    if (light.type == LightType::point) {
+      to_light = light.position - point;
+      factor = light_falloff(light, length(to_light));
+    } else {
+      to_light = -light.direction;
+    }
+    const double cosine = dot(normal, normalize(to_light));
+    if (cosine <= 0 || factor <= 0) continue;
+    const double w = cosine * factor;
+    out.r += color.r * light.intensity.r * w;
+    out.g += color.g * light.intensity.g * w;
+    out.b += color.b * light.intensity.b * w;
+  }
+  return out;
+}
+
+float encode_srgb(float linear) {
+  const float c = std::clamp(linear, 0.0f, 1.0f);
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+}  // namespace umbra::raster

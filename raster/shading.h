@@ -1,0 +1,23 @@
+#pragma once
+// Shading of a visible sample: ambient plus Lambert per light with Bergeron's
+// falloff, added only for lights that reach the sample.
+#include <geometry/scene.h>
+
+namespace umbra::raster {
+
+/// Bergeron's intensity factor at distance d from a point light: 1 up to
+/// dec_begin, ((light_end - d) / (light_end - dec_begin))^decrease up to
+/// light_end, 0 from light_end on. 1 for unlimited and directional lights.
+double light_falloff(const geometry::Light& light, double distance);
+
+/// Ambient + sum over the lit lights of color · intensity · falloff · max(0, n·l).
+/// `normal` is the unit normal facing the eye; `lit[i]` says whether light i
+/// reaches the point (its count is zero and it is in range).
+geometry::Rgb shade(const geometry::Scene& scene, const geometry::Rgb& color,
+                    const geometry::Vec3& point, const geometry::Vec3& normal,
+                    const std::vector<bool>& lit);
+
+/// The sRGB transfer curve, for the PNG's 8 bits (input clamped to [0, 1]).
+float encode_srgb(float linear);
+
+}  // namespace umbra::raster

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of umbra from Debian's packages.
+# Idempotent: apt-get skips what is already installed. Needs root (or sudo).
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
+  nlohmann-json3-dev libcli11-dev libtinygltf-dev libfmt-dev libtbb-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  assimp-testmodels
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO=sudo
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
