@@ -1,0 +1,35 @@
+#pragma once
+// Mesh files read as exact doubles. OpenMesh's own readers round every
+// coordinate to float (PLATFORM-NOTES.md), so umbra parses each format itself
+// and keeps the doubles the text (or binary double) denotes.
+#include <geometry/scene.h>
+
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+namespace umbra::geometry {
+
+/// Vertices and polygons as the file gives them: polygons of any size are kept
+/// whole (never triangulated), indices 0-based into `vertices`.
+struct PolygonSoup {
+  std::vector<Vec3> vertices;
+  std::vector<Polygon> polygons;
+};
+
+/// Reads OFF, OBJ, PLY (ASCII, binary little/big endian) and STL (ASCII,
+/// binary), chosen by the extension, case-insensitively. STL triangles get
+/// their own three vertices each; coincident vertices are merged only when
+/// bit-identical, so that adjacency is found.
+///
+/// Throws InputError naming the file and line (or byte offset) on: a missing
+/// or unreadable file, an unknown extension, malformed numbers or headers,
+/// NaN or infinite coordinates, face indices out of range, faces with fewer
+/// than 3 vertices, and files with no polygon.
+PolygonSoup read_polygon_soup(const std::filesystem::path& file);
+
+/// Same, from bytes in memory; `name` stands for the file in messages and its
+/// extension chooses the format. For fuzzing and tests.
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::path& name);
+
+}  // namespace umbra::geometry

@@ -1,0 +1,41 @@
+#pragma once
+// Bouknight's scanline algorithm with Crow's shadow polygons in the same
+// sorts, in floating point. Where a floating-point decision at a sample is too
+// close to call, the pixel is flagged `uncertain` and the caller decides it
+// again exactly; every other pixel's answer is final.
+#include <geometry/sample_ray.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace umbra::raster {
+
+/// A planar polygon handed to the scanline renderer, in world space.
+struct RasterPolygon {
+  enum class Kind : std::uint8_t { surface, shadow };
+  std::vector<geometry::Vec3> vertices;
+  Kind kind = Kind::surface;
+  /// surface: the caller's surface id; shadow: index in ShadowVolumes::polygons.
+  std::uint32_t id = 0;
+  std::uint32_t light = 0;  ///< shadow only
+  /// shadow only: view-independent weight, added when the eye ray crosses the
+  /// polygon from the side on which its vertices run counter-clockwise,
+  /// subtracted when it crosses from the other side.
+  std::int8_t nb_c = 0;
+};
+
+struct ScanlineResult {
+  int width = 0, height = 0;
+  std::size_t lights = 0;
+  std::vector<std::int32_t> visible;  ///< surface id per pixel; -1 where the ray hits nothing
+  std::vector<double> depth;          ///< ray parameter t of the visible hit (infinity if none)
+  std::vector<std::int32_t> count;    ///< [pixel * lights + light]: summed weights in front of the hit
+  std::vector<std::uint8_t> uncertain;
+};
+
+ScanlineResult scanline_render(const geometry::CameraFrame& frame,
+                               std::span<const RasterPolygon> polygons, std::size_t lights,
+                               unsigned threads);
+
+}  // namespace umbra::raster
