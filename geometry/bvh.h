@@ -1,0 +1,48 @@
+#pragma once
+// A bounding-volume hierarchy over axis-aligned boxes that only picks
+// candidates: its float tests are conservative (boxes are widened by more
+// than the rounding error of the tests), and exact predicates decide.
+#include <geometry/vec3.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace umbra::geometry {
+
+struct Box {
+  Vec3 lo{1e308, 1e308, 1e308};
+  Vec3 hi{-1e308, -1e308, -1e308};
+  void extend(const Vec3& p);
+  void extend(const Box& b);
+  Vec3 centre() const { return (lo + hi) * 0.5; }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+class Bvh {
+ public:
+  Bvh() = default;
+  /// `boxes[i]` bounds item i.
+  explicit Bvh(std::vector<Box> boxes);
+
+  /// Items whose box may meet the segment from `from` to `to` (or the ray
+  /// from `from` along `to` when `to_is_direction`), widened by `slack` in
+  /// every direction. Appends to `out`.
+  void query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
+                     std::vector<std::uint32_t>& out) const;
+
+  std::size_t size() const { return boxes_.size(); }
+
+ private:
+  struct Node {
+    Box box;
+    std::uint32_t first = 0;  ///< leaf: first index into order_; inner: left child
+    std::uint32_t count = 0;  ///< leaf: number of items; inner: 0
+  };
+  std::uint32_t build(std::uint32_t begin, std::uint32_t end);
+
+  std::vector<Box> boxes_;
+  std::vector<std::uint32_t> order_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace umbra::geometry

@@ -1,0 +1,163 @@
+// Every predicate must equal exact rational arithmetic, including on
+// degenerate input (coplanar, collinear, points at infinity, huge and tiny
+// coordinates). The reference below computes with CGAL::Exact_rational.
+#include <geometry/exact_predicates.h>
+
+#include <CGAL/Exact_rational.h>
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace umbra::geometry {
+namespace {
+
+using Q = CGAL::Exact_rational;
+
+struct QV {
+  Q x, y, z;
+};
+QV q(const Vec3& v) { return {Q(v.x), Q(v.y), Q(v.z)}; }
+QV operator-(const QV& a, const QV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+QV operator+(const QV& a, const QV& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+QV operator*(const Q& s, const QV& a) { return {s * a.x, s * a.y, s * a.z}; }
+Q det(const QV& a, const QV& b, const QV& c) {
+  return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+}
+Sign sign_of(const Q& v) { return v > 0 ? Sign::positive : (v < 0 ? Sign::negative : Sign::zero); }
+QV slot(const HPoint& p, const QV& base) { return p.finite ? q(p.v) - base : q(p.v); }
+
+Sign reference_orientation(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d) {
+  const QV qa = q(a);
+  return sign_of(det(slot(b, qa), slot(c, qa), slot(d, qa)));
+}
+
+/// orientation(a, b, c, P) for P = H - ε·d, with H constructed exactly.
+Sign reference_at_sample(const Vec3& a, const HPoint& b, const HPoint& c, const SamplePoint& s) {
+  const QV e = q(s.eye), d = q(s.direction), h0 = q(s.hit0);
+  const QV n1 = q(s.hit1) - h0, n2 = q(s.hit2) - h0;
+  const Q t = -det(n1, n2, e - h0) / det(n1, n2, d);
+  const QV h = e + t * d;
+  const QV qa = q(a);
+  const Sign at_h = sign_of(det(slot(b, qa), slot(c, qa), h - qa));
+  if (at_h != Sign::zero) return at_h;
+  return -sign_of(det(slot(b, qa), slot(c, qa), d));
+}
+
+/// Coordinates that make exact degeneracies likely: small integers scaled
+/// by one power of two per point set, over 1e-6 .. 1e6.
+class Generator {
+ public:
+  explicit Generator(unsigned seed) : rng_(seed) {}
+  double lattice(double scale) { return std::uniform_int_distribution<int>(-3, 3)(rng_) * scale; }
+  double any(double scale) { return std::uniform_real_distribution<double>(-1, 1)(rng_) * scale; }
+  double scale() { return std::ldexp(1.0, std::uniform_int_distribution<int>(-20, 20)(rng_)); }
+  Vec3 point(double s, bool on_lattice) {
+    return on_lattice ? Vec3{lattice(s), lattice(s), lattice(s)} : Vec3{any(s), any(s), any(s)};
+  }
+  bool coin() { return std::uniform_int_distribution<int>(0, 1)(rng_) == 1; }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+TEST(Orientation, MatchesCgalConventionOnTheUnitTetrahedron) {
+  const Vec3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  EXPECT_EQ(orientation(o, x, y, z), Sign::positive);
+  EXPECT_EQ(orientation(o, y, x, z), Sign::negative);
+  EXPECT_EQ(orientation(o, x, y, Vec3{5, -7, 0}), Sign::zero);
+}
+
+TEST(Orientation, EqualsRationalArithmeticOnRandomAndDegenerateInput) {
+  Generator gen(20261123);
+  int zeros = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double s = gen.scale();
+    const bool lattice = i % 3 != 0;
+    const Vec3 a = gen.point(s, lattice);
+    HPoint b = HPoint::point(gen.point(s, lattice));
+    HPoint c = HPoint::point(gen.point(s, lattice));
+    HPoint d = HPoint::point(gen.point(s, lattice));
+    if (i % 5 == 1) d.finite = false;
+    if (i % 7 == 2) c.finite = false;
+    const Sign expected = reference_orientation(a, b, c, d);
+    ASSERT_EQ(orientation(a, b, c, d), expected) << "case " << i;
+    zeros += expected == Sign::zero;
+  }
+  EXPECT_GT(zeros, 500);  // the lattice really produced degenerate cases
+}
+
+TEST(Orientation, NearlyCoplanarPointsNeedTheExactFallback) {
+  // d is one ulp off the plane z = 0.5 through the other three.
+  const Vec3 a{0.1, 0.2, 0.5}, b{1e6, 3.3, 0.5}, c{-7.25, 1e-6, 0.5};
+  const Vec3 d{0.3, 0.3, std::nextafter(0.5, 1.0)};
+  EXPECT_EQ(orientation(a, b, c, d), reference_orientation(a, HPoint::point(b), HPoint::point(c), HPoint::point(d)));
+  EXPECT_NE(orientation(a, b, c, d), Sign::zero);
+  EXPECT_EQ(orientation(a, b, c, Vec3{0.3, 0.3, 0.5}), Sign::zero);
+}
+
+TEST(OrientationAtSample, EqualsRationalArithmeticIncludingPointsOnTheHitPlane) {
+  Generator gen(7);
+  int on_plane = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const double s = gen.scale();
+    SamplePoint p{gen.point(s, true), gen.point(s, true), gen.point(s, true), gen.point(s, true),
+                  gen.point(s, true)};
+    const QV h0 = q(p.hit0);
+    if (det(q(p.hit1) - h0, q(p.hit2) - h0, q(p.direction)) == 0) continue;  // precondition
+    // Half the time query the hit plane itself, so that f(H) = 0.
+    const bool same = gen.coin();
+    const Vec3 a = same ? p.hit0 : gen.point(s, true);
+    const HPoint b = HPoint::point(same ? p.hit1 : gen.point(s, true));
+    HPoint c = HPoint::point(same ? p.hit2 : gen.point(s, true));
+    if (!same && i % 4 == 0) c.finite = false;
+    const Sign expected = reference_at_sample(a, b, c, p);
+    ASSERT_EQ(orientation(a, b, c, p), expected) << "case " << i;
+    on_plane += same;
+  }
+  EXPECT_GT(on_plane, 1000);
+}
+
+TEST(FanOrientation, LightInTheFacePlaneIsZeroAndSidesHaveOppositeSigns) {
+  const std::vector<Vec3> square{{0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};  // clockwise from +y
+  EXPECT_EQ(fan_orientation(square, HPoint::point({5, 1, -3})), Sign::zero);
+  EXPECT_EQ(fan_orientation(square, HPoint::point({0.5, 5, 0.5})), Sign::negative);
+  EXPECT_EQ(fan_orientation(square, HPoint::point({0.5, -5, 0.5})), Sign::positive);
+  // A directional light travelling along -y sits at infinity towards +y.
+  EXPECT_EQ(fan_orientation(square, HPoint::at_infinity({0, 1, 0})), Sign::negative);
+  EXPECT_EQ(fan_orientation(square, HPoint::at_infinity({1, 0, 0})), Sign::zero);
+  // Collinear vertices: no area, no facing.
+  const std::vector<Vec3> line{{0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {2, 2, 2}};
+  EXPECT_EQ(fan_orientation(line, HPoint::point({0, 5, 0})), Sign::zero);
+}
+
+TEST(RayParameters, CompareExactlyEvenWhenEqual) {
+  const Vec3 eye{0, 0, 0}, d{0.125, 0.25, 0.375};
+  // Two different planes through the same point 8·d.
+  const Vec3 h{1, 2, 3};
+  EXPECT_EQ(compare_ray_parameters(eye, d, h, h + Vec3{1, 0, 0}, h + Vec3{0, 1, 0}, h,
+                                   h + Vec3{0, 0, 1}, h + Vec3{1, 1, 0}),
+            Sign::zero);
+  EXPECT_EQ(compare_ray_parameters(eye, d, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, h, h + Vec3{1, 0, 0},
+                                   h + Vec3{0, 1, 0}),
+            Sign::negative);
+}
+
+TEST(HitDistance, ComparesWithTheRadiusExactly) {
+  // The ray from (0,0,0) along (1,0,0) meets the plane x = 4 at H = (4,0,0);
+  // the light at (4,3,0) is at distance 3.
+  const Vec3 eye{0, 0, 0}, d{1, 0, 0}, a{4, 0, 0}, b{4, 1, 0}, c{4, 0, 1};
+  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, 3.0), Sign::zero);
+  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, std::nextafter(3.0, 4.0)), Sign::negative);
+  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, std::nextafter(3.0, 2.0)), Sign::positive);
+}
+
+TEST(Collinear, AndParallelAreExact) {
+  const double tiny = std::ldexp(1.0, -20), huge = std::ldexp(1.0, 20);
+  EXPECT_TRUE(collinear({0, 0, 0}, {tiny, 2 * tiny, 3 * tiny}, {huge, 2 * huge, 3 * huge}));
+  EXPECT_FALSE(collinear({0, 0, 0}, {0.1, 0.2, 0.3}, {0.3, 0.6, std::nextafter(0.9, 1.0)}));
+  EXPECT_TRUE(parallel({1, 2, 3}, {-2, -4, -6}));
+  EXPECT_FALSE(parallel({1, 2, 3}, {2, 4, std::nextafter(6.0, 7.0)}));
+}
+
+}  // namespace
+}  // namespace umbra::geometry
