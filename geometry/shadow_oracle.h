@@ -1,0 +1,39 @@
+#pragma once
+// The exact point-in-shadow query: DESIGN.md's truth, which every render
+// method is judged by.
+#include <geometry/exact_predicates.h>
+#include <geometry/visible_surface.h>
+
+#include <vector>
+
+namespace umbra::geometry {
+
+enum class ShadowClass : std::uint8_t { lit, shadowed, out_of_range };
+
+struct ShadowAnswer {
+  /// With `boundary` set, the class that the tie-breaks chose; any class is
+  /// acceptable from a method there.
+  ShadowClass cls = ShadowClass::lit;
+  bool boundary = false;
+};
+
+/// The class of the sample point P = H - ε·d of `hit` (found by first_hit for
+/// `ray`) for light `light`:
+/// - out of range when the light has light_end and |H - L| > light_end;
+/// - shadowed when some shadow-casting polygon's surface is crossed an odd
+///   number of times by the segment from P to L (for a directional light,
+///   the ray from P against its direction);
+/// - lit otherwise.
+/// Boundary when the answer could change under an arbitrarily small move:
+/// |H - L| = light_end, the segment touches a polygon edge or vertex or runs
+/// in a face's plane, L lies in the plane of a shadow-casting hit polygon, or
+/// the hit itself is a boundary (hit.boundary); unless another polygon
+/// shadows P robustly, which no small move undoes.
+ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, const SurfaceHit& hit,
+                             std::uint32_t light);
+
+/// The homogeneous position of a light: the point, or for a directional
+/// light travelling along D the point at infinity in direction -D.
+HPoint light_point(const Light& light);
+
+}  // namespace umbra::geometry
