@@ -36,7 +36,7 @@ struct ShadowPolygon {
   /// type 2: the contour edge is polygon's edge (edge, edge + 1 mod n).
   std::uint32_t edge = 0;
   ShadowPolygonType type = ShadowPolygonType::side;
-  std::int8_t nb_c = 0;
+  std::int32_t nb_c = 0;
   bool twisted = false;
 };
 

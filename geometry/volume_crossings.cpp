@@ -1,0 +1,75 @@
+#include <geometry/exact_predicates.h>
+#include <geometry/shadow_oracle.h>
+#include <geometry/volume_crossings.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace umbra::geometry {
+
+VolumeCrossings::VolumeCrossings(const Scene& scene, const ShadowVolumes& volumes)
+    : scene_(&scene), volumes_(&volumes) {
+  std::vector<std::vector<Box>> boxes(scene.lights.size());
+  items_.resize(scene.lights.size());
+  for (std::uint32_t i = 0; i < volumes.polygons.size(); ++i) {
+    const ShadowPolygon& sp = volumes.polygons[i];
+    if (sp.type != ShadowPolygonType::side) continue;
+    Box box;
+    for (const Vec3& v : sp.vertices) {
+      box.extend(v);
+      magnitude_ = std::max({magnitude_, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    }
+    boxes[sp.light].push_back(box);
+    items_[sp.light].push_back(i);
+  }
+  for (auto& b : boxes) per_light_.emplace_back(std::move(b));
+}
+
+std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangle& hit,
+                                          std::uint32_t light_index) const {
+  const Light& light = scene_->lights[light_index];
+  const HPoint lp = light_point(light);
+  const SamplePoint p{ray.origin, ray.direction, hit.a, hit.b, hit.c};
+  const HPoint eye = HPoint::point(ray.origin);
+
+  // Candidates along the eye segment; the rounded far vertices of the side
+  // polygons differ from the ideal wedge by far less than the slack.
+  const double t = ray_plane_parameter(ray.origin, ray.direction, hit.a, hit.b, hit.c);
+  const double slack = 1e-9 * (magnitude_ + std::abs(t) * length(ray.direction)) + 1e-300;
+  std::vector<std::uint32_t> candidates;
+  per_light_[light_index].query_segment(ray.origin, ray.origin + t * ray.direction, false, slack,
+                                        candidates);
+  int total = 0;
+  for (std::uint32_t c : candidates) {
+    const ShadowPolygon& sp = volumes_->polygons[items_[light_index][c]];
+    const Vec3& u = sp.vertices[0];
+    const Vec3& v = sp.vertices[1];
+    // Sides of the wedge's plane (u, v, L): the eye and P must be strictly apart.
+    const Sign side_eye = orientation(u, HPoint::point(v), lp, eye);
+    const Sign side_p = orientation(u, HPoint::point(v), lp, p);
+    if (side_eye == Sign::zero || side_p == Sign::zero) return std::nullopt;
+    if (side_eye == side_p) continue;
+    // Does the line EP pass inside the wedge? orientation(E, P, x, y) is
+    // orientation(E, x, y, P). The wedge's edges are u→v, v→(away from L),
+    // (at infinity), (from infinity)→u; the rays from u and v away from L
+    // give orientation(E, P, L, v) and orientation(E, P, u, L), and the edge
+    // at infinity of a point light the sign of det[d, v - L, u - L].
+    const Sign s1 = orientation(ray.origin, HPoint::point(u), HPoint::point(v), p);
+    const Sign s2 = orientation(ray.origin, lp, HPoint::point(v), p);
+    const Sign s3 = orientation(ray.origin, HPoint::point(u), lp, p);
+    if (s1 == Sign::zero || s2 == Sign::zero || s3 == Sign::zero) return std::nullopt;
+    if (s1 != s2 || s2 != s3) continue;
+    if (light.type == LightType::point) {
+      const Sign s4 = orientation(light.position, HPoint::at_infinity(ray.direction),
+                                  HPoint::point(v), HPoint::point(u));
+      if (s4 == Sign::zero) return std::nullopt;
+      if (s4 != s1) continue;
+    }
+    // The quad (u, v, v', u') runs counter-clockwise seen from the side where
+    // orientation(u, v, L, X) < 0.
+    total += side_eye == Sign::negative ? sp.nb_c : -sp.nb_c;
+  }
+  return total;
+}
+
+}  // namespace umbra::geometry
