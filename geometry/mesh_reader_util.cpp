@@ -71,7 +71,8 @@ std::string quoted(std::string_view token) {
   constexpr std::size_t kMax = 40;
   std::string out = "'";
   for (char c : token.substr(0, kMax)) {
-    out += (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f) ? c : '?';
+    out +=
+        (static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f) ? c : '?';
   }
   if (token.size() > kMax) out += "...";
   return out + "'";
@@ -86,8 +87,8 @@ Real parse_real(std::string_view token, const std::string& where, std::string_vi
     if (!digits.empty() && (digits[0] == '-' || digits[0] == '+')) digits = {};
   }
   Real value{};
-  const auto [ptr, ec] =
-      std::from_chars(digits.data(), digits.data() + digits.size(), value, std::chars_format::general);
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value,
+                                         std::chars_format::general);
   if (digits.empty() || ptr != digits.data() + digits.size() ||
       (ec != std::errc{} && ec != std::errc::result_out_of_range)) {
     throw InputError(where, "malformed " + std::string(what) + " " + quoted(token));
@@ -107,7 +108,8 @@ double parse_double(std::string_view token, const std::string& where, std::strin
 
 double parse_coordinate(std::string_view token, const std::string& where) {
   const double value = parse_real<double>(token, where, "coordinate");
-  if (!std::isfinite(value)) throw InputError(where, "coordinate " + quoted(token) + " is not finite");
+  if (!std::isfinite(value))
+    throw InputError(where, "coordinate " + quoted(token) + " is not finite");
   return value;
 }
 

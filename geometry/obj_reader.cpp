@@ -37,8 +37,8 @@ std::uint32_t vertex_index(std::string_view reference, std::size_t vertex_count,
 }  // namespace
 
 PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
-  if (bytes.size() >= 2 && ((bytes[0] == '\xFE' && bytes[1] == '\xFF') ||
-                            (bytes[0] == '\xFF' && bytes[1] == '\xFE'))) {
+  if (bytes.size() >= 2 &&
+      ((bytes[0] == '\xFE' && bytes[1] == '\xFF') || (bytes[0] == '\xFF' && bytes[1] == '\xFE'))) {
     throw InputError(at_line(name, 1), "UTF-16 text is not supported; save the OBJ as UTF-8");
   }
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);  // UTF-8 byte-order mark
@@ -48,7 +48,8 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
   std::string_view line;
   std::string_view token;
   while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
     Tokens tokens(line);
     std::string_view keyword;
     if (!tokens.next(keyword)) continue;
@@ -82,11 +83,13 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
       const std::string where = at_line(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n < 3) {
-        throw InputError(where, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
+        throw InputError(where,
+                         "face has " + std::to_string(n) + " vertices; at least 3 are needed");
       }
       Polygon polygon;
       polygon.reserve(n);
-      while (tokens.next(token)) polygon.push_back(vertex_index(token, soup.vertices.size(), where));
+      while (tokens.next(token))
+        polygon.push_back(vertex_index(token, soup.vertices.size(), where));
       soup.polygons.push_back(std::move(polygon));
     }
     // Everything else (vt, vn, g, o, s, usemtl, mtllib, l, p, ...) carries no polygon.

@@ -21,7 +21,8 @@ namespace {
 // The next line with a token on it, comments removed; false at the end.
 bool next_content_line(LineReader& lines, std::string_view& line) {
   while (lines.next(line)) {
-    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    if (const auto hash = line.find('#'); hash != std::string_view::npos)
+      line = line.substr(0, hash);
     Tokens probe(line);
     std::string_view token;
     if (probe.next(token)) return true;
@@ -67,9 +68,11 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   constexpr std::int64_t kMaxCount = std::numeric_limits<std::int64_t>::max();
   std::string_view token;
   counts.next(token);
-  const auto nv = static_cast<std::uint64_t>(parse_integer(token, counts_where, "vertex count", 0, kMaxCount));
+  const auto nv =
+      static_cast<std::uint64_t>(parse_integer(token, counts_where, "vertex count", 0, kMaxCount));
   counts.next(token);
-  const auto nf = static_cast<std::uint64_t>(parse_integer(token, counts_where, "face count", 0, kMaxCount));
+  const auto nf =
+      static_cast<std::uint64_t>(parse_integer(token, counts_where, "face count", 0, kMaxCount));
   if (counts.next(token)) parse_integer(token, counts_where, "edge count", 0, kMaxCount);
 
   // Never trust a count before the file has shown it can hold that much.
@@ -89,8 +92,9 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   soup.polygons.reserve(nf);
   for (std::uint64_t v = 0; v < nv; ++v) {
     if (!next_content_line(lines, line)) {
-      throw InputError(at_line(name, lines.line_number()),
-                       "file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
+      throw InputError(
+          at_line(name, lines.line_number()),
+          "file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
     }
     const std::string where = at_line(name, lines.line_number());
     Tokens values(line);
@@ -107,8 +111,9 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   const auto max_index = static_cast<std::int64_t>(nv) - 1;
   for (std::uint64_t f = 0; f < nf; ++f) {
     if (!next_content_line(lines, line)) {
-      throw InputError(at_line(name, lines.line_number()),
-                       "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+      throw InputError(
+          at_line(name, lines.line_number()),
+          "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
     }
     const std::string where = at_line(name, lines.line_number());
     Tokens values(line);
@@ -126,8 +131,10 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
     polygon.reserve(static_cast<std::size_t>(n));
     for (std::int64_t k = 0; k < n; ++k) {
       values.next(token);
-      if (max_index < 0) throw InputError(where, "face index " + std::string(token) + " but the file has no vertex");
-      polygon.push_back(static_cast<std::uint32_t>(parse_integer(token, where, "face index", 0, max_index)));
+      if (max_index < 0)
+        throw InputError(where, "face index " + std::string(token) + " but the file has no vertex");
+      polygon.push_back(
+          static_cast<std::uint32_t>(parse_integer(token, where, "face index", 0, max_index)));
     }
     soup.polygons.push_back(std::move(polygon));
   }

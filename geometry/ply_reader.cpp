@@ -38,10 +38,18 @@ std::optional<Scalar> scalar_named(std::string_view name) {
 
 std::size_t size_of(Scalar type) {
   switch (type) {
-    case Scalar::i8: case Scalar::u8: return 1;
-    case Scalar::i16: case Scalar::u16: return 2;
-    case Scalar::i32: case Scalar::u32: case Scalar::f32: return 4;
-    case Scalar::f64: return 8;
+    case Scalar::i8:
+    case Scalar::u8:
+      return 1;
+    case Scalar::i16:
+    case Scalar::u16:
+      return 2;
+    case Scalar::i32:
+    case Scalar::u32:
+    case Scalar::f32:
+      return 4;
+    case Scalar::f64:
+      return 8;
   }
   return 0;
 }
@@ -50,21 +58,31 @@ bool is_integer(Scalar type) { return type != Scalar::f32 && type != Scalar::f64
 
 std::int64_t min_of(Scalar type) {
   switch (type) {
-    case Scalar::i8: return std::numeric_limits<std::int8_t>::min();
-    case Scalar::i16: return std::numeric_limits<std::int16_t>::min();
-    case Scalar::i32: return std::numeric_limits<std::int32_t>::min();
-    default: return 0;
+    case Scalar::i8:
+      return std::numeric_limits<std::int8_t>::min();
+    case Scalar::i16:
+      return std::numeric_limits<std::int16_t>::min();
+    case Scalar::i32:
+      return std::numeric_limits<std::int32_t>::min();
+    default:
+      return 0;
   }
 }
 
 std::int64_t max_of(Scalar type) {
   switch (type) {
-    case Scalar::i8: return std::numeric_limits<std::int8_t>::max();
-    case Scalar::u8: return std::numeric_limits<std::uint8_t>::max();
-    case Scalar::i16: return std::numeric_limits<std::int16_t>::max();
-    case Scalar::u16: return std::numeric_limits<std::uint16_t>::max();
-    case Scalar::i32: return std::numeric_limits<std::int32_t>::max();
-    default: return std::numeric_limits<std::uint32_t>::max();
+    case Scalar::i8:
+      return std::numeric_limits<std::int8_t>::max();
+    case Scalar::u8:
+      return std::numeric_limits<std::uint8_t>::max();
+    case Scalar::i16:
+      return std::numeric_limits<std::int16_t>::max();
+    case Scalar::u16:
+      return std::numeric_limits<std::uint16_t>::max();
+    case Scalar::i32:
+      return std::numeric_limits<std::int32_t>::max();
+    default:
+      return std::numeric_limits<std::uint32_t>::max();
   }
 }
 
@@ -96,7 +114,10 @@ Header parse_header(std::string_view bytes, const std::string& name) {
   LineReader lines(bytes);
   std::string_view line;
   std::string_view token;
-  if (!lines.next(line) || [&] { Tokens t(line); return !t.next(token) || token != "ply" || t.next(token); }()) {
+  if (!lines.next(line) || [&] {
+        Tokens t(line);
+        return !t.next(token) || token != "ply" || t.next(token);
+      }()) {
     throw InputError(at_line(name, 1), "malformed PLY header: the first line must be 'ply'");
   }
   bool have_format = false;
@@ -116,10 +137,14 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       if (!tokens.next(format) || !tokens.next(version) || tokens.next(token) || version != "1.0") {
         throw InputError(where, "malformed PLY format line: expected 'format <encoding> 1.0'");
       }
-      if (format == "ascii") header.encoding = Encoding::ascii;
-      else if (format == "binary_little_endian") header.encoding = Encoding::little_endian;
-      else if (format == "binary_big_endian") header.encoding = Encoding::big_endian;
-      else throw InputError(where, "unknown PLY format '" + std::string(format) + "'");
+      if (format == "ascii")
+        header.encoding = Encoding::ascii;
+      else if (format == "binary_little_endian")
+        header.encoding = Encoding::little_endian;
+      else if (format == "binary_big_endian")
+        header.encoding = Encoding::big_endian;
+      else
+        throw InputError(where, "unknown PLY format '" + std::string(format) + "'");
       have_format = true;
     } else if (keyword == "element") {
       std::string_view element_name;
@@ -128,8 +153,8 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       }
       Element element;
       element.name = element_name;
-      element.count = static_cast<std::uint64_t>(
-          parse_integer(token, where, "element count", 0, std::numeric_limits<std::int64_t>::max()));
+      element.count = static_cast<std::uint64_t>(parse_integer(
+          token, where, "element count", 0, std::numeric_limits<std::int64_t>::max()));
       element.line = lines.line_number();
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
@@ -143,17 +168,21 @@ Header parse_header(std::string_view bytes, const std::string& name) {
         std::string_view property_name;
         if (!tokens.next(count_name) || !tokens.next(item_name) || !tokens.next(property_name) ||
             tokens.next(token)) {
-          throw InputError(where, "malformed PLY list property: expected 'property list <count type> <item type> <name>'");
+          throw InputError(where,
+                           "malformed PLY list property: expected 'property list <count type> "
+                           "<item type> <name>'");
         }
         const auto count_type = scalar_named(count_name);
         const auto item_type = scalar_named(item_name);
         if (!count_type || !item_type) throw InputError(where, "unknown PLY scalar type");
-        if (!is_integer(*count_type)) throw InputError(where, "PLY list count type must be an integer type");
+        if (!is_integer(*count_type))
+          throw InputError(where, "PLY list count type must be an integer type");
         property = {std::string(property_name), true, *count_type, *item_type};
       } else {
         std::string_view property_name;
         const auto type = scalar_named(type_name);
-        if (!type) throw InputError(where, "unknown PLY scalar type '" + std::string(type_name) + "'");
+        if (!type)
+          throw InputError(where, "unknown PLY scalar type '" + std::string(type_name) + "'");
         if (!tokens.next(property_name) || tokens.next(token)) {
           throw InputError(where, "malformed PLY property: expected 'property <type> <name>'");
         }
@@ -164,7 +193,8 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       throw InputError(where, "unknown PLY header keyword '" + std::string(keyword) + "'");
     }
   }
-  if (!have_format) throw InputError(at_line(name, lines.line_number()), "PLY header has no format line");
+  if (!have_format)
+    throw InputError(at_line(name, lines.line_number()), "PLY header has no format line");
   header.data_offset = lines.position();
   header.data_line = lines.line_number() + 1;
   return header;
@@ -208,7 +238,9 @@ class AsciiSource {
 class BinarySource {
  public:
   BinarySource(std::string_view bytes, std::size_t offset, bool big_endian, const std::string& name)
-      : bytes_(bytes), pos_(offset), swap_(big_endian != (std::endian::native == std::endian::big)),
+      : bytes_(bytes),
+        pos_(offset),
+        swap_(big_endian != (std::endian::native == std::endian::big)),
         name_(name) {}
 
   std::string where() const { return at_byte(name_, pos_); }
@@ -230,13 +262,38 @@ class BinarySource {
   }
   std::int64_t integer(Scalar type, std::string_view /*what*/, const std::string& context) {
     switch (type) {
-      case Scalar::i8: { std::int8_t v; load(&v, 1, context); return v; }
-      case Scalar::u8: { std::uint8_t v; load(&v, 1, context); return v; }
-      case Scalar::i16: { std::int16_t v; load(&v, 2, context); return v; }
-      case Scalar::u16: { std::uint16_t v; load(&v, 2, context); return v; }
-      case Scalar::i32: { std::int32_t v; load(&v, 4, context); return v; }
-      case Scalar::u32: { std::uint32_t v; load(&v, 4, context); return v; }
-      default: break;  // the header admits only integer types here
+      case Scalar::i8: {
+        std::int8_t v;
+        load(&v, 1, context);
+        return v;
+      }
+      case Scalar::u8: {
+        std::uint8_t v;
+        load(&v, 1, context);
+        return v;
+      }
+      case Scalar::i16: {
+        std::int16_t v;
+        load(&v, 2, context);
+        return v;
+      }
+      case Scalar::u16: {
+        std::uint16_t v;
+        load(&v, 2, context);
+        return v;
+      }
+      case Scalar::i32: {
+        std::int32_t v;
+        load(&v, 4, context);
+        return v;
+      }
+      case Scalar::u32: {
+        std::uint32_t v;
+        load(&v, 4, context);
+        return v;
+      }
+      default:
+        break;  // the header admits only integer types here
     }
     throw InputError(where(), "internal: integer read of a floating-point PLY type");
   }
@@ -273,8 +330,10 @@ void check_counts(const Header& header, std::size_t body_size, const std::string
   for (const Element& element : header.elements) {
     std::uint64_t per_item = 0;
     for (const Property& property : element.properties) {
-      if (header.encoding == Encoding::ascii) per_item += 2;
-      else per_item += size_of(property.is_list ? property.count_type : property.type);
+      if (header.encoding == Encoding::ascii)
+        per_item += 2;
+      else
+        per_item += size_of(property.is_list ? property.count_type : property.type);
     }
     const std::string where = at_line(name, element.line);
     if (per_item == 0 && element.count > 0) {
@@ -284,8 +343,9 @@ void check_counts(const Header& header, std::size_t body_size, const std::string
     const std::uint64_t room = body_size + 1;  // an ASCII body may lack its last separator
     if (element.count > room / per_item || needed + element.count * per_item > room) {
       throw InputError(where, "PLY element '" + element.name + "' declares " +
-                                  std::to_string(element.count) + " items, more than the remaining " +
-                                  std::to_string(body_size) + " bytes can hold");
+                                  std::to_string(element.count) +
+                                  " items, more than the remaining " + std::to_string(body_size) +
+                                  " bytes can hold");
     }
     needed += element.count * per_item;
   }
@@ -306,20 +366,22 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
       Vec3 p;
       for (const Property& property : element.properties) {
         if (property.is_list) {
-          const bool indices = is_face && (property.name == "vertex_indices" || property.name == "vertex_index");
+          const bool indices =
+              is_face && (property.name == "vertex_indices" || property.name == "vertex_index");
           const std::int64_t n = source.integer(property.count_type, "list length", context);
           const std::string at = source.last_where();
           if (n < 0) throw InputError(at, "negative list length in " + context);
           if (!source.has_room(static_cast<std::uint64_t>(n), property.type)) {
-            throw InputError(at, "truncated data: list length " + std::to_string(n) + " in " + context +
-                                     " runs past the end of the file");
+            throw InputError(at, "truncated data: list length " + std::to_string(n) + " in " +
+                                     context + " runs past the end of the file");
           }
           if (!indices) {
             for (std::int64_t k = 0; k < n; ++k) source.real(property.type, "list value", context);
             continue;
           }
           if (n < 3) {
-            throw InputError(at, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
+            throw InputError(at,
+                             "face has " + std::to_string(n) + " vertices; at least 3 are needed");
           }
           Polygon polygon;
           polygon.reserve(static_cast<std::size_t>(n));
@@ -333,9 +395,11 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
             polygon.push_back(static_cast<std::uint32_t>(index));
           }
           soup.polygons.push_back(std::move(polygon));
-        } else if (is_vertex && (property.name == "x" || property.name == "y" || property.name == "z")) {
+        } else if (is_vertex &&
+                   (property.name == "x" || property.name == "y" || property.name == "z")) {
           const double value = source.real(property.type, "coordinate", context);
-          if (!std::isfinite(value)) throw InputError(source.last_where(), "coordinate " + property.name + " is not finite");
+          if (!std::isfinite(value))
+            throw InputError(source.last_where(), "coordinate " + property.name + " is not finite");
           (property.name == "x" ? p.x : property.name == "y" ? p.y : p.z) = value;
         } else {
           source.real(property.type, "value", context);
@@ -362,11 +426,13 @@ PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
         int found = 0;
         for (const Property& property : element.properties) {
           if (property.name != axis) continue;
-          if (property.is_list) throw InputError(where, std::string("vertex property ") + axis + " is a list");
+          if (property.is_list)
+            throw InputError(where, std::string("vertex property ") + axis + " is a list");
           ++found;
         }
         if (found != 1) {
-          throw InputError(where, std::string("PLY element 'vertex' needs exactly one property ") + axis);
+          throw InputError(where,
+                           std::string("PLY element 'vertex' needs exactly one property ") + axis);
         }
       }
     } else if (element.name == "face") {
@@ -381,7 +447,8 @@ PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
         ++found;
       }
       if (found != 1) {
-        throw InputError(where, "PLY element 'face' needs one list property vertex_indices (or vertex_index)");
+        throw InputError(
+            where, "PLY element 'face' needs one list property vertex_indices (or vertex_index)");
       }
     }
   }

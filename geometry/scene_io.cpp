@@ -48,7 +48,9 @@ class LocatingSax {
   bool boolean(bool v) { return value(dom_.boolean(v)); }
   bool number_integer(Json::number_integer_t v) { return value(dom_.number_integer(v)); }
   bool number_unsigned(Json::number_unsigned_t v) { return value(dom_.number_unsigned(v)); }
-  bool number_float(Json::number_float_t v, const Json::string_t& s) { return value(dom_.number_float(v, s)); }
+  bool number_float(Json::number_float_t v, const Json::string_t& s) {
+    return value(dom_.number_float(v, s));
+  }
   bool string(Json::string_t& v) { return value(dom_.string(v)); }
   bool binary(Json::binary_t& v) { return value(dom_.binary(v)); }
   bool start_object(std::size_t n) {
@@ -80,9 +82,12 @@ class LocatingSax {
     // nlohmann's position counts the characters read, the offending one
     // included: the error is at 0-based offset position - 1.
     const std::size_t offset = std::min(position == 0 ? 0 : position - 1, text_.size());
-    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + offset, '\n'));
-    const std::size_t line_start = text_.rfind('\n', offset == 0 ? std::string_view::npos : offset - 1);
-    const std::size_t column = offset - (line_start == std::string_view::npos ? 0 : line_start + 1) + 1;
+    const std::size_t line =
+        1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + offset, '\n'));
+    const std::size_t line_start =
+        text_.rfind('\n', offset == 0 ? std::string_view::npos : offset - 1);
+    const std::size_t column =
+        offset - (line_start == std::string_view::npos ? 0 : line_start + 1) + 1;
     const std::string at = "line " + std::to_string(line) + ", column " + std::to_string(column);
     if (error.id == 406) {  // number overflow: the value would be infinite
       const std::string field = path();
@@ -113,7 +118,8 @@ class LocatingSax {
   }
   std::string path() const {
     std::string out;
-    for (const Frame& frame : frames_) out = frame.object ? child(out, frame.key) : item(out, frame.index);
+    for (const Frame& frame : frames_)
+      out = frame.object ? child(out, frame.key) : item(out, frame.index);
     return out;
   }
 
@@ -148,7 +154,8 @@ class SceneReader {
 
   const Json& required(const Json& object, std::string_view key, const std::string& path) const {
     const auto it = object.find(key);
-    if (it == object.end()) fail(child(path, key), "missing required field '" + std::string(key) + "'");
+    if (it == object.end())
+      fail(child(path, key), "missing required field '" + std::string(key) + "'");
     return *it;
   }
 
@@ -166,7 +173,9 @@ class SceneReader {
             ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(max) &&
                   (min <= 0 || v.get<std::uint64_t>() >= static_cast<std::uint64_t>(min))
             : v.get<std::int64_t>() >= min && v.get<std::int64_t>() <= max;
-    if (!in_range) fail(path, "must be an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    if (!in_range)
+      fail(path,
+           "must be an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
     return static_cast<int>(v.get<std::int64_t>());
   }
 
@@ -186,7 +195,8 @@ class SceneReader {
   }
 
   Vec3 vec3(const Json& v, const std::string& path) const {
-    if (!v.is_array() || v.size() != 3) fail(path, "expected an array of 3 numbers, found " + shape(v));
+    if (!v.is_array() || v.size() != 3)
+      fail(path, "expected an array of 3 numbers, found " + shape(v));
     return {number(v[0], item(path, 0)), number(v[1], item(path, 1)), number(v[2], item(path, 2))};
   }
 
@@ -236,7 +246,8 @@ Camera read_camera(const SceneReader& in, const Json& v) {
   if (v.contains("width")) camera.width = in.integer(v["width"], "camera.width", 1, 16384);
   if (v.contains("height")) camera.height = in.integer(v["height"], "camera.height", 1, 16384);
 
-  if (camera.eye == camera.look_at) in.fail("camera.look_at", "equals camera.eye: there is no view direction");
+  if (camera.eye == camera.look_at)
+    in.fail("camera.look_at", "equals camera.eye: there is no view direction");
   const Vec3 view = camera.look_at - camera.eye;
   if (!is_finite(view)) in.fail("camera.look_at", "look_at - eye overflows a double");
   if (cross(view, camera.up) == Vec3{0, 0, 0}) {
@@ -246,8 +257,11 @@ Camera read_camera(const SceneReader& in, const Json& v) {
   // that is not parallel but so nearly so, or so tiny, that the frame
   // underflows or overflows would give NaN rays: refuse it here.
   const CameraFrame frame = camera_frame(camera);
-  if (!is_finite(frame.f) || !is_finite(frame.r) || !is_finite(frame.u) || frame.r == Vec3{0, 0, 0}) {
-    in.fail("camera.up", "gives no usable camera frame in doubles (nearly parallel to look_at - eye, or extreme magnitudes)");
+  if (!is_finite(frame.f) || !is_finite(frame.r) || !is_finite(frame.u) ||
+      frame.r == Vec3{0, 0, 0}) {
+    in.fail("camera.up",
+            "gives no usable camera frame in doubles (nearly parallel to look_at - eye, or extreme "
+            "magnitudes)");
   }
   return camera;
 }
@@ -264,14 +278,17 @@ Light read_light(const SceneReader& in, const Json& v, const std::string& path) 
     light.type = LightType::directional;
     for (const char* key : {"dec_begin", "light_end", "decrease"}) {
       if (v.contains(key)) {
-        in.fail(child(path, key), std::string("'") + key + "' means nothing for a directional light");
+        in.fail(child(path, key),
+                std::string("'") + key + "' means nothing for a directional light");
       }
     }
     in.check_keys(v, path, {"type", "direction", "intensity"});
     light.direction = in.vec3(in.required(v, "direction", path), child(path, "direction"));
-    if (light.direction == Vec3{0, 0, 0}) in.fail(child(path, "direction"), "must not be the zero vector");
+    if (light.direction == Vec3{0, 0, 0})
+      in.fail(child(path, "direction"), "must not be the zero vector");
   } else {
-    in.fail(child(path, "type"), "unknown light type '" + type + "'; expected point or directional");
+    in.fail(child(path, "type"),
+            "unknown light type '" + type + "'; expected point or directional");
   }
   if (v.contains("intensity")) light.intensity = in.rgb(v["intensity"], child(path, "intensity"));
   if (v.contains("dec_begin")) {
@@ -285,7 +302,8 @@ Light read_light(const SceneReader& in, const Json& v, const std::string& path) 
     light.light_end = end;
   }
   if (v.contains("decrease")) {
-    light.decrease = in.integer(v["decrease"], child(path, "decrease"), 0, std::numeric_limits<int>::max());
+    light.decrease =
+        in.integer(v["decrease"], child(path, "decrease"), 0, std::numeric_limits<int>::max());
   }
   return light;
 }
@@ -309,8 +327,10 @@ Transform read_transform(const SceneReader& in, const Json& v, const std::string
       in.fail(at, "must not be zero");
     }
   }
-  if (v.contains("rotate_deg")) transform.rotate_deg = in.vec3(v["rotate_deg"], child(path, "rotate_deg"));
-  if (v.contains("translate")) transform.translate = in.vec3(v["translate"], child(path, "translate"));
+  if (v.contains("rotate_deg"))
+    transform.rotate_deg = in.vec3(v["rotate_deg"], child(path, "rotate_deg"));
+  if (v.contains("translate"))
+    transform.translate = in.vec3(v["translate"], child(path, "translate"));
   return transform;
 }
 
@@ -321,7 +341,8 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
   const std::string vertices_path = child(path, "vertices");
   const Json& vertices = in.array(in.required(v, "vertices", path), vertices_path);
   soup.vertices.reserve(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) soup.vertices.push_back(in.vec3(vertices[i], item(vertices_path, i)));
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    soup.vertices.push_back(in.vec3(vertices[i], item(vertices_path, i)));
   const std::string faces_path = child(path, "faces");
   const Json& faces = in.array(in.required(v, "faces", path), faces_path);
   if (faces.empty()) in.fail(faces_path, "empty mesh: no polygon");
@@ -330,7 +351,8 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
     const std::string face_path = item(faces_path, f);
     const Json& face = in.array(faces[f], face_path);
     if (face.size() < 3) {
-      in.fail(face_path, "face has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
+      in.fail(face_path,
+              "face has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
     }
     Polygon polygon;
     polygon.reserve(face.size());
@@ -338,9 +360,11 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
       const std::string index_path = item(face_path, k);
       const Json& index = face[k];
       if (!index.is_number_integer()) in.fail(index_path, "expected a vertex index (an integer)");
-      const bool in_range = index.is_number_unsigned()
-                                ? max_index >= 0 && index.get<std::uint64_t>() <= static_cast<std::uint64_t>(max_index)
-                                : index.get<std::int64_t>() >= 0 && index.get<std::int64_t>() <= max_index;
+      const bool in_range =
+          index.is_number_unsigned()
+              ? max_index >= 0 &&
+                    index.get<std::uint64_t>() <= static_cast<std::uint64_t>(max_index)
+              : index.get<std::int64_t>() >= 0 && index.get<std::int64_t>() <= max_index;
       if (!in_range) {
         in.fail(index_path, "vertex index " + index.dump() + " out of range: " +
                                 std::to_string(soup.vertices.size()) + " vertices");
@@ -357,11 +381,14 @@ Model read_model(const SceneReader& in, const Json& v, std::size_t index) {
   in.expect_object(v, path);
   in.check_keys(v, path, {"name", "mesh", "polygons", "color", "casts_shadows", "transform"});
   Model model;
-  model.name = v.contains("name") ? in.string(v["name"], child(path, "name")) : "model" + std::to_string(index);
+  model.name = v.contains("name") ? in.string(v["name"], child(path, "name"))
+                                  : "model" + std::to_string(index);
   if (v.contains("color")) model.color = in.rgb(v["color"], child(path, "color"));
-  if (v.contains("casts_shadows")) model.casts_shadows = in.boolean(v["casts_shadows"], child(path, "casts_shadows"));
+  if (v.contains("casts_shadows"))
+    model.casts_shadows = in.boolean(v["casts_shadows"], child(path, "casts_shadows"));
   Transform transform;
-  if (v.contains("transform")) transform = read_transform(in, v["transform"], child(path, "transform"));
+  if (v.contains("transform"))
+    transform = read_transform(in, v["transform"], child(path, "transform"));
 
   const bool has_mesh = v.contains("mesh");
   const bool has_polygons = v.contains("polygons");
@@ -408,19 +435,23 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file)
   if (root.contains("ambient")) scene.ambient = in.rgb(root["ambient"], "ambient");
   if (root.contains("lights")) {
     const Json& lights = in.array(root["lights"], "lights");
-    for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(in, lights[i], item("lights", i)));
+    for (std::size_t i = 0; i < lights.size(); ++i)
+      scene.lights.push_back(read_light(in, lights[i], item("lights", i)));
   }
   const Json& models = in.array(in.required(root, "models", ""), "models");
   if (models.empty()) in.fail("models", "a scene needs at least one model");
-  for (std::size_t i = 0; i < models.size(); ++i) scene.models.push_back(read_model(in, models[i], i));
+  for (std::size_t i = 0; i < models.size(); ++i)
+    scene.models.push_back(read_model(in, models[i], i));
   return scene;
 }
 
 Scene load_scene(const std::filesystem::path& file) {
   std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw InputError(file.string(), "cannot read scene: is a directory");
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(file.string(), "cannot read scene: is a directory");
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), std::string("cannot open scene file: ") + std::strerror(errno));
+  if (!in)
+    throw InputError(file.string(), std::string("cannot open scene file: ") + std::strerror(errno));
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad()) throw InputError(file.string(), "cannot read scene file: I/O error");
   return parse_scene(text, file);

@@ -32,7 +32,8 @@ class VertexMerger {
   std::uint32_t index_of(const Vec3& p) {
     const Key key{std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y),
                   std::bit_cast<std::uint64_t>(p.z)};
-    const auto [it, inserted] = indices_.try_emplace(key, static_cast<std::uint32_t>(soup_.vertices.size()));
+    const auto [it, inserted] =
+        indices_.try_emplace(key, static_cast<std::uint32_t>(soup_.vertices.size()));
     if (inserted) soup_.vertices.push_back(p);
     return it->second;
   }
@@ -73,7 +74,8 @@ PolygonSoup parse_binary(std::string_view bytes, std::uint32_t count, const std:
         const std::size_t offset = facet + 12 + 12 * corner + 4 * axis;
         *axes[axis] = static_cast<double>(read_f32_le(bytes.data() + offset));
         if (!std::isfinite(*axes[axis])) {
-          throw InputError(at_byte(name, offset), "coordinate is not finite (triangle " + std::to_string(t) + ")");
+          throw InputError(at_byte(name, offset),
+                           "coordinate is not finite (triangle " + std::to_string(t) + ")");
         }
       }
       polygon.push_back(merger.index_of(p));
@@ -83,7 +85,9 @@ PolygonSoup parse_binary(std::string_view bytes, std::uint32_t count, const std:
   return soup;
 }
 
-bool keyword_is(std::string_view token, std::string_view keyword) { return to_lower(token) == keyword; }
+bool keyword_is(std::string_view token, std::string_view keyword) {
+  return to_lower(token) == keyword;
+}
 
 PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
   PolygonSoup soup;
@@ -92,33 +96,39 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
   std::string_view token;
   auto expect = [&](std::string_view keyword) {
     if (!cursor.next(token)) {
-      throw InputError(at_line(name, cursor.line()), "file ends where '" + std::string(keyword) + "' was expected");
+      throw InputError(at_line(name, cursor.line()),
+                       "file ends where '" + std::string(keyword) + "' was expected");
     }
     if (!keyword_is(token, keyword)) {
-      throw InputError(at_line(name, cursor.line()),
-                       "expected '" + std::string(keyword) + "', found '" + std::string(token.substr(0, 40)) + "'");
+      throw InputError(at_line(name, cursor.line()), "expected '" + std::string(keyword) +
+                                                         "', found '" +
+                                                         std::string(token.substr(0, 40)) + "'");
     }
   };
   auto number = [&](bool coordinate) {
-    if (!cursor.next(token)) throw InputError(at_line(name, cursor.line()), "file ends inside a facet");
+    if (!cursor.next(token))
+      throw InputError(at_line(name, cursor.line()), "file ends inside a facet");
     const std::string where = at_line(name, cursor.line());
-    return coordinate ? parse_coordinate(token, where) : parse_double(token, where, "normal component");
+    return coordinate ? parse_coordinate(token, where)
+                      : parse_double(token, where, "normal component");
   };
 
   while (cursor.next(token)) {  // one solid per turn
     if (!keyword_is(token, "solid")) {
-      throw InputError(at_line(name, cursor.line()), "expected 'solid', found '" + std::string(token.substr(0, 40)) + "'");
+      throw InputError(at_line(name, cursor.line()),
+                       "expected 'solid', found '" + std::string(token.substr(0, 40)) + "'");
     }
     cursor.skip_line();  // the solid's name
     while (true) {
-      if (!cursor.next(token)) throw InputError(at_line(name, cursor.line()), "file ends before 'endsolid'");
+      if (!cursor.next(token))
+        throw InputError(at_line(name, cursor.line()), "file ends before 'endsolid'");
       if (keyword_is(token, "endsolid")) {
         cursor.skip_line();
         break;
       }
       if (!keyword_is(token, "facet")) {
-        throw InputError(at_line(name, cursor.line()),
-                         "expected 'facet' or 'endsolid', found '" + std::string(token.substr(0, 40)) + "'");
+        throw InputError(at_line(name, cursor.line()), "expected 'facet' or 'endsolid', found '" +
+                                                           std::string(token.substr(0, 40)) + "'");
       }
       const std::size_t facet_line = cursor.line();
       expect("normal");
@@ -127,11 +137,13 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
       expect("loop");
       Polygon polygon;
       while (true) {
-        if (!cursor.next(token)) throw InputError(at_line(name, cursor.line()), "file ends inside a facet");
+        if (!cursor.next(token))
+          throw InputError(at_line(name, cursor.line()), "file ends inside a facet");
         if (keyword_is(token, "endloop")) break;
         if (!keyword_is(token, "vertex")) {
-          throw InputError(at_line(name, cursor.line()),
-                           "expected 'vertex' or 'endloop', found '" + std::string(token.substr(0, 40)) + "'");
+          throw InputError(
+              at_line(name, cursor.line()),
+              "expected 'vertex' or 'endloop', found '" + std::string(token.substr(0, 40)) + "'");
         }
         Vec3 p;
         p.x = number(true);
@@ -162,18 +174,20 @@ bool starts_with_solid(std::string_view bytes) {
 PolygonSoup parse_stl(std::string_view bytes, const std::string& name) {
   if (bytes.size() >= 84) {
     const std::uint32_t count = read_u32_le(bytes.data() + 80);
-    if (84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) return parse_binary(bytes, count, name);
+    if (84 + 50 * static_cast<std::uint64_t>(count) == bytes.size())
+      return parse_binary(bytes, count, name);
     if (!starts_with_solid(bytes)) {
       throw InputError(at_byte(name, 80),
-                       "truncated or oversized binary STL: the header declares " + std::to_string(count) +
-                           " triangles (84 + 50·" + std::to_string(count) + " = " +
-                           std::to_string(84 + 50 * static_cast<std::uint64_t>(count)) +
+                       "truncated or oversized binary STL: the header declares " +
+                           std::to_string(count) + " triangles (84 + 50·" + std::to_string(count) +
+                           " = " + std::to_string(84 + 50 * static_cast<std::uint64_t>(count)) +
                            " bytes) but the file has " + std::to_string(bytes.size()) +
                            " bytes, and it is not ASCII STL (no 'solid' first)");
     }
   } else if (!starts_with_solid(bytes)) {
-    throw InputError(name, "not an STL file: " + std::to_string(bytes.size()) +
-                               " bytes is too short for binary STL and it does not start with 'solid'");
+    throw InputError(name,
+                     "not an STL file: " + std::to_string(bytes.size()) +
+                         " bytes is too short for binary STL and it does not start with 'solid'");
   }
   return parse_ascii(bytes, name);
 }

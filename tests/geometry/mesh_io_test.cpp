@@ -2,7 +2,6 @@
 // with its file and line (or byte), and the real files of assimp-testmodels.
 #include <geometry/input_error.h>
 #include <geometry/mesh_io.h>
-
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -91,20 +90,26 @@ TEST(MeshIoOff, ParsesExactDoublesAndKeepsPolygonsWhole) {
 
 TEST(MeshIoOff, AcceptsEveryHeaderSpellingAndCountsOnTheHeaderLine) {
   for (const char* header : {"OFF\n", "COFF\n", "NOFF\n", "CNOFF\n"}) {
-    const std::string text = std::string(header) + "3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n";
+    const std::string text =
+        std::string(header) + "3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n";
     EXPECT_EQ(parse_polygon_soup(text, "h.off").polygons.size(), 1u) << header;
   }
-  EXPECT_EQ(parse_polygon_soup("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2", "inline.OFF").vertices.size(), 3u);
+  EXPECT_EQ(
+      parse_polygon_soup("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2", "inline.OFF").vertices.size(),
+      3u);
 }
 
 TEST(MeshIoOff, MalformedHeaderNamesLine) {
-  EXPECT_TRUE(starts_with(error_of_text("# c\nOFX\n3 1 0\n", "bad.off"), "bad.off:2: malformed OFF header"));
-  EXPECT_TRUE(starts_with(error_of_text("OFF\n3 x 0\n", "bad.off"), "bad.off:2: malformed face count 'x'"));
+  EXPECT_TRUE(starts_with(error_of_text("# c\nOFX\n3 1 0\n", "bad.off"),
+                          "bad.off:2: malformed OFF header"));
+  EXPECT_TRUE(
+      starts_with(error_of_text("OFF\n3 x 0\n", "bad.off"), "bad.off:2: malformed face count 'x'"));
   EXPECT_TRUE(starts_with(error_of_text("", "empty.off"), "empty.off:1: missing OFF header"));
 }
 
 TEST(MeshIoOff, MalformedNumberNamesLine) {
-  const std::string msg = error_of_text("OFF\n3 1 0\n0 0 0\n1 0.0.1 0\n0 1 0\n3 0 1 2\n", "num.off");
+  const std::string msg =
+      error_of_text("OFF\n3 1 0\n0 0 0\n1 0.0.1 0\n0 1 0\n3 0 1 2\n", "num.off");
   EXPECT_TRUE(starts_with(msg, "num.off:4: malformed coordinate '0.0.1'"));
 }
 
@@ -113,8 +118,9 @@ TEST(MeshIoOff, NanAndInfinityAreRefused) {
                           "nan.off:4: coordinate 'nan' is not finite"));
   EXPECT_TRUE(starts_with(error_of_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 -inf 0\n3 0 1 2\n", "inf.off"),
                           "inf.off:5: coordinate '-inf' is not finite"));
-  EXPECT_TRUE(starts_with(error_of_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e999 0\n3 0 1 2\n", "big.off"),
-                          "big.off:5: coordinate '1e999' is out of the range of a double"));
+  EXPECT_TRUE(
+      starts_with(error_of_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e999 0\n3 0 1 2\n", "big.off"),
+                  "big.off:5: coordinate '1e999' is out of the range of a double"));
 }
 
 TEST(MeshIoOff, FaceIndexOutOfRangeNamesLine) {
@@ -130,13 +136,15 @@ TEST(MeshIoOff, FaceWithFewerThanThreeVerticesNamesLine) {
 }
 
 TEST(MeshIoOff, HugeCountsAreRefusedBeforeAllocating) {
-  const std::string msg = error_of([] { read_polygon_soup("/usr/share/assimp/models/invalid/OutOfMemory.off"); });
-  EXPECT_TRUE(starts_with(msg, "/usr/share/assimp/models/invalid/OutOfMemory.off:2: declares 353535235358 vertices"));
+  const std::string msg =
+      error_of([] { read_polygon_soup("/usr/share/assimp/models/invalid/OutOfMemory.off"); });
+  EXPECT_TRUE(starts_with(
+      msg, "/usr/share/assimp/models/invalid/OutOfMemory.off:2: declares 353535235358 vertices"));
 }
 
 TEST(MeshIoOff, FileEndingEarlyNamesLine) {
-  const std::string msg =
-      error_of_text("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n#                         \n", "end.off");
+  const std::string msg = error_of_text(
+      "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n#                         \n", "end.off");
   EXPECT_TRUE(starts_with(msg, "end.off:7: file ends after 1 of 2 faces"));
 }
 
@@ -181,8 +189,10 @@ TEST(MeshIoObj, HomogeneousWOtherThanOneIsRefused) {
 }
 
 TEST(MeshIoObj, MalformedNumbersAndNonFiniteValuesNameLine) {
-  EXPECT_TRUE(starts_with(error_of_text("v 1 2 3.1+e2\n", "n.obj"), "n.obj:1: malformed coordinate '3.1+e2'"));
-  EXPECT_TRUE(starts_with(error_of_text("\nv 1 NaN 3\n", "n.obj"), "n.obj:2: coordinate 'NaN' is not finite"));
+  EXPECT_TRUE(starts_with(error_of_text("v 1 2 3.1+e2\n", "n.obj"),
+                          "n.obj:1: malformed coordinate '3.1+e2'"));
+  EXPECT_TRUE(starts_with(error_of_text("\nv 1 NaN 3\n", "n.obj"),
+                          "n.obj:2: coordinate 'NaN' is not finite"));
   EXPECT_TRUE(starts_with(error_of_text("v 1 2\n", "n.obj"), "n.obj:1: vertex needs 'x y z [w]'"));
   EXPECT_TRUE(starts_with(error_of_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x/1\n", "n.obj"),
                           "n.obj:4: malformed face index 'x'"));
@@ -209,8 +219,9 @@ TEST(MeshIoObj, KeepsA66GonWhole) {
 TEST(MeshIoPly, AsciiFloatIsTheFloatAndDoubleIsTheDouble) {
   const PolygonSoup soup = read_polygon_soup(kData / "hexagon.ply");
   ASSERT_EQ(soup.vertices.size(), 6u);
-  EXPECT_EQ(soup.vertices[0].x, 0.1);                        // property double
-  EXPECT_EQ(soup.vertices[0].y, static_cast<double>(0.1f));  // property float: the float 0.1f denotes
+  EXPECT_EQ(soup.vertices[0].x, 0.1);  // property double
+  EXPECT_EQ(soup.vertices[0].y,
+            static_cast<double>(0.1f));  // property float: the float 0.1f denotes
   EXPECT_EQ(soup.vertices[0].z, 0.30000000000000004);
   EXPECT_EQ(soup.vertices[1], (Vec3{1e-300, 1, 0}));
   EXPECT_EQ(soup.vertices[5], (Vec3{1, 2, 0}));
@@ -230,14 +241,34 @@ std::string binary_ply(bool big_endian) {
          "element skipme 2\nproperty list ushort int data\nproperty double w\n"
          "element face 2\nproperty list uint32 uint16 vertex_indices\nproperty int8 tag\n"
          "end_header\n");
-  b.value(0.1).value(0.1f).value<std::uint8_t>(9).value<std::int16_t>(-7).value<std::uint8_t>(2).value(1.5f).value(2.5f);
+  b.value(0.1)
+      .value(0.1f)
+      .value<std::uint8_t>(9)
+      .value<std::int16_t>(-7)
+      .value<std::uint8_t>(2)
+      .value(1.5f)
+      .value(2.5f);
   b.value(1e-300).value(1.0f).value<std::uint8_t>(9).value<std::int16_t>(0).value<std::uint8_t>(0);
-  b.value(0.30000000000000004).value(2.0f).value<std::uint8_t>(9).value<std::int16_t>(3).value<std::uint8_t>(0);
-  b.value(-1.0).value(-0.0f).value<std::uint8_t>(9).value<std::int16_t>(32767).value<std::uint8_t>(0);
+  b.value(0.30000000000000004)
+      .value(2.0f)
+      .value<std::uint8_t>(9)
+      .value<std::int16_t>(3)
+      .value<std::uint8_t>(0);
+  b.value(-1.0).value(-0.0f).value<std::uint8_t>(9).value<std::int16_t>(32767).value<std::uint8_t>(
+      0);
   b.value<std::uint16_t>(1).value<std::int32_t>(5).value(9.0);
   b.value<std::uint16_t>(0).value(9.0);
-  b.value<std::uint32_t>(4).value<std::uint16_t>(0).value<std::uint16_t>(1).value<std::uint16_t>(2).value<std::uint16_t>(3).value<std::int8_t>(-1);
-  b.value<std::uint32_t>(3).value<std::uint16_t>(3).value<std::uint16_t>(2).value<std::uint16_t>(3).value<std::int8_t>(1);
+  b.value<std::uint32_t>(4)
+      .value<std::uint16_t>(0)
+      .value<std::uint16_t>(1)
+      .value<std::uint16_t>(2)
+      .value<std::uint16_t>(3)
+      .value<std::int8_t>(-1);
+  b.value<std::uint32_t>(3)
+      .value<std::uint16_t>(3)
+      .value<std::uint16_t>(2)
+      .value<std::uint16_t>(3)
+      .value<std::int8_t>(1);
   return b.str();
 }
 
@@ -253,9 +284,25 @@ void expect_binary_ply_values(const PolygonSoup& soup) {
   EXPECT_EQ(soup.polygons[1], (Polygon{3, 2, 3}));
 }
 
-TEST(MeshIoPly, BinaryLittleEndian) { expect_binary_ply_values(parse_polygon_soup(binary_ply(false), "le.ply")); }
+TEST(MeshIoPly, BinaryLittleEndian) {
+  expect_binary_ply_values(parse_polygon_soup(binary_ply(false), "le.ply"));
+}
 
-TEST(MeshIoPly, BinaryBigEndian) { expect_binary_ply_values(parse_polygon_soup(binary_ply(true), "be.ply")); }
+TEST(MeshIoPly, BinaryBigEndian) {
+  expect_binary_ply_values(parse_polygon_soup(binary_ply(true), "be.ply"));
+}
+
+TEST(MeshIoPly, AsciiIntegerTypeAliasesAndRanges) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty char x\nproperty short y\n"
+      "property uint z\nelement face 1\nproperty list int8 uint vertex_index\nend_header\n";
+  const PolygonSoup soup =
+      parse_polygon_soup(header + "-128 -32768 4294967295\n127 32767 0\n0 0 1\n3 0 1 2\n", "i.ply");
+  EXPECT_EQ(soup.vertices[0], (Vec3{-128, -32768, 4294967295.0}));
+  EXPECT_EQ(soup.vertices[1], (Vec3{127, 32767, 0}));
+  EXPECT_EQ(error_of_text(header + "128 0 0\n127 32767 0\n0 0 1\n3 0 1 2\n", "i.ply"),
+            "i.ply:10: coordinate '128' is out of range [-128, 127]");
+}
 
 TEST(MeshIoPly, TruncatedBinaryNamesByteOffset) {
   std::string bytes = binary_ply(false);
@@ -270,8 +317,9 @@ TEST(MeshIoPly, TruncatedBinaryNamesByteOffset) {
 
 TEST(MeshIoPly, BinaryNonFiniteCoordinateNamesByteOffset) {
   Bytes b(false);
-  b.text("ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-         "property float z\nend_header\n");
+  b.text(
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n");
   const std::size_t header = b.str().size();
   b.value(0.0f).value(std::numeric_limits<float>::quiet_NaN()).value(0.0f);
   EXPECT_EQ(error_of_text(b.str(), "nan.ply"),
@@ -280,34 +328,45 @@ TEST(MeshIoPly, BinaryNonFiniteCoordinateNamesByteOffset) {
 
 TEST(MeshIoPly, FaceIndexOutOfRangeNamesLine) {
   const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n";
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 "
+      "0 1 3\n";
   EXPECT_EQ(error_of_text(text, "idx.ply"), "idx.ply:13: face index 3 out of range: 3 vertices");
 }
 
 TEST(MeshIoPly, MalformedHeaderAndNumbersNameLine) {
-  EXPECT_TRUE(starts_with(error_of_text("ply\nformat ascii 2.0\n", "h.ply"), "h.ply:2: malformed PLY format line"));
-  EXPECT_TRUE(starts_with(error_of_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\n", "h.ply"),
-                          "h.ply:4: unknown PLY scalar type 'real'"));
-  EXPECT_TRUE(starts_with(error_of_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "h.ply"),
-                          "h.ply:4: malformed PLY header: no 'end_header'"));
+  EXPECT_TRUE(starts_with(error_of_text("ply\nformat ascii 2.0\n", "h.ply"),
+                          "h.ply:2: malformed PLY format line"));
+  EXPECT_TRUE(starts_with(
+      error_of_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\n", "h.ply"),
+      "h.ply:4: unknown PLY scalar type 'real'"));
+  EXPECT_TRUE(starts_with(
+      error_of_text("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "h.ply"),
+      "h.ply:4: malformed PLY header: no 'end_header'"));
   const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0x1 0\n0 1 0\n3 0 1 2\n";
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0x1 0\n0 1 "
+      "0\n3 0 1 2\n";
   EXPECT_EQ(error_of_text(text, "n.ply"), "n.ply:11: malformed coordinate '0x1'");
 }
 
 TEST(MeshIoPly, AsciiInfinityNamesLine) {
   const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 inf\n3 0 1 2\n";
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty "
+      "double z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 "
+      "inf\n3 0 1 2\n";
   EXPECT_EQ(error_of_text(text, "inf.ply"), "inf.ply:12: coordinate z is not finite");
 }
 
 TEST(MeshIoPly, FaceWithFewerThanThreeVerticesNamesLine) {
   const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n";
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n2 "
+      "0 1\n";
   EXPECT_EQ(error_of_text(text, "f2.ply"), "f2.ply:13: face has 2 vertices; at least 3 are needed");
 }
 
@@ -315,7 +374,8 @@ TEST(MeshIoPly, HugeCountIsRefusedBeforeAllocating) {
   const std::string text =
       "ply\nformat binary_little_endian 1.0\nelement vertex 353535235358\nproperty float x\n"
       "property float y\nproperty float z\nend_header\n0000";
-  EXPECT_TRUE(starts_with(error_of_text(text, "huge.ply"), "huge.ply:3: PLY element 'vertex' declares 353535235358 items"));
+  EXPECT_TRUE(starts_with(error_of_text(text, "huge.ply"),
+                          "huge.ply:3: PLY element 'vertex' declares 353535235358 items"));
 }
 
 TEST(MeshIoPly, PointCloudIsAnEmptyMesh) {
@@ -360,8 +420,9 @@ TEST(MeshIoStl, TruncatedBinaryNamesByteOffset) {
   Bytes count(false);
   count.value<std::uint32_t>(2);
   bytes += count.str() + std::string(60, '\0');
-  EXPECT_TRUE(starts_with(error_of_text(bytes, "cut.stl"),
-                          "cut.stl: byte 80: truncated or oversized binary STL: the header declares 2 triangles"));
+  EXPECT_TRUE(starts_with(
+      error_of_text(bytes, "cut.stl"),
+      "cut.stl: byte 80: truncated or oversized binary STL: the header declares 2 triangles"));
 }
 
 TEST(MeshIoStl, BinaryNonFiniteCoordinateNamesByteOffset) {
@@ -371,23 +432,31 @@ TEST(MeshIoStl, BinaryNonFiniteCoordinateNamesByteOffset) {
   b.value(0.0f).value(0.0f).value(0.0f).value(1.0f).value(0.0f).value(0.0f);
   b.value(0.0f).value(std::numeric_limits<float>::infinity()).value(0.0f);
   b.value<std::uint16_t>(0);
-  EXPECT_TRUE(starts_with(error_of_text(b.str(), "inf.stl"), "inf.stl: byte 124: coordinate is not finite"));
+  EXPECT_TRUE(starts_with(error_of_text(b.str(), "inf.stl"),
+                          "inf.stl: byte 124: coordinate is not finite"));
 }
 
 TEST(MeshIoStl, AsciiErrorsNameLine) {
-  EXPECT_TRUE(starts_with(error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 zero 0\n", "a.stl"),
-                          "a.stl:5: malformed coordinate 'zero'"));
-  EXPECT_TRUE(starts_with(error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                                        "endloop\nendfacet\nendsolid x\n", "a.stl"),
-                          "a.stl:2: facet has 2 vertices; at least 3 are needed"));
-  EXPECT_TRUE(starts_with(error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "a.stl"),
-                          "a.stl:4: file ends inside a facet"));
-  EXPECT_TRUE(starts_with(error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex inf 0 0\n", "a.stl"),
-                          "a.stl:4: coordinate 'inf' is not finite"));
+  EXPECT_TRUE(starts_with(
+      error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 zero 0\n",
+                    "a.stl"),
+      "a.stl:5: malformed coordinate 'zero'"));
+  EXPECT_TRUE(starts_with(
+      error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                    "endloop\nendfacet\nendsolid x\n",
+                    "a.stl"),
+      "a.stl:2: facet has 2 vertices; at least 3 are needed"));
+  EXPECT_TRUE(
+      starts_with(error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "a.stl"),
+                  "a.stl:4: file ends inside a facet"));
+  EXPECT_TRUE(starts_with(
+      error_of_text("solid x\nfacet normal 0 0 1\nouter loop\nvertex inf 0 0\n", "a.stl"),
+      "a.stl:4: coordinate 'inf' is not finite"));
 }
 
 TEST(MeshIoStl, NoFacetIsAnEmptyMesh) {
-  EXPECT_EQ(error_of_text("solid nothing\nendsolid nothing\n", "e.stl"), "e.stl: empty mesh: the file has no polygon");
+  EXPECT_EQ(error_of_text("solid nothing\nendsolid nothing\n", "e.stl"),
+            "e.stl: empty mesh: the file has no polygon");
 }
 
 TEST(MeshIoStl, NeitherAsciiNorBinary) {
@@ -413,7 +482,8 @@ TEST(MeshIo, UnknownExtensionIsAnError) {
 }
 
 TEST(MeshIo, ExtensionIsCaseInsensitive) {
-  EXPECT_EQ(parse_polygon_soup("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "UPPER.OBJ").polygons.size(), 1u);
+  EXPECT_EQ(parse_polygon_soup("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "UPPER.OBJ").polygons.size(),
+            1u);
 }
 
 TEST(MeshIo, CollinearFaceIsKept) {
@@ -436,7 +506,8 @@ TEST(MeshIoAssimpModels, EveryFileLoadsOrThrowsInputError) {
         EXPECT_FALSE(soup.polygons.empty()) << entry.path();
         for (const Polygon& polygon : soup.polygons) {
           ASSERT_GE(polygon.size(), 3u) << entry.path();
-          for (std::uint32_t index : polygon) ASSERT_LT(index, soup.vertices.size()) << entry.path();
+          for (std::uint32_t index : polygon)
+            ASSERT_LT(index, soup.vertices.size()) << entry.path();
         }
         for (const Vec3& p : soup.vertices) ASSERT_TRUE(is_finite(p)) << entry.path();
         ++loaded;
@@ -460,7 +531,8 @@ TEST(MeshIoAssimpModels, ExactFaceCounts) {
   EXPECT_EQ(read_polygon_soup(root / "OFF/Wuson.off").polygons.size(), 3732u);
   EXPECT_EQ(read_polygon_soup(root / "STL/Spider_ascii.stl").polygons.size(), 1368u);
   EXPECT_EQ(read_polygon_soup(root / "STL/Spider_binary.stl").polygons.size(), 1368u);
-  EXPECT_EQ(read_polygon_soup(root / "OBJ/testmixed.obj").polygons.size(), 6u);  // l and p lines ignored
+  EXPECT_EQ(read_polygon_soup(root / "OBJ/testmixed.obj").polygons.size(),
+            6u);  // l and p lines ignored
   EXPECT_EQ(read_polygon_soup(root / "PLY/cube.ply").polygons.size(), 6u);
 }
 

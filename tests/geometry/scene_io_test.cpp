@@ -2,7 +2,6 @@
 // reported with the file and the field path (or line and column).
 #include <geometry/input_error.h>
 #include <geometry/scene_io.h>
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -30,10 +29,12 @@ std::string error_of(F&& f) {
 }
 
 const char* const kCamera = R"("camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]})";
-const char* const kTriangle = R"({"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]}})";
+const char* const kTriangle =
+    R"({"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]}})";
 
 // A scene with the given lights and models arrays (JSON text) and the camera above.
-std::string scene(const std::string& lights, const std::string& models = std::string("[") + kTriangle + "]") {
+std::string scene(const std::string& lights,
+                  const std::string& models = std::string("[") + kTriangle + "]") {
   return std::string("{") + kCamera + ", \"lights\": " + lights + ", \"models\": " + models + "}";
 }
 
@@ -102,7 +103,8 @@ TEST(SceneIo, FullSceneLoadsWithExactValues) {
 }
 
 TEST(SceneIo, DefaultsOfAMinimalScene) {
-  const Scene s = parse_scene(std::string("{") + kCamera + ", \"models\": [" + kTriangle + "]}", "min.json");
+  const Scene s =
+      parse_scene(std::string("{") + kCamera + ", \"models\": [" + kTriangle + "]}", "min.json");
   EXPECT_EQ(s.camera.up, (Vec3{0, 1, 0}));
   EXPECT_EQ(s.camera.fov_y_deg, 40);
   EXPECT_EQ(s.camera.width, 640);
@@ -138,9 +140,13 @@ TEST(SceneIo, WrongTypeNamesField) {
             kFile + ": lights[0].position: expected an array of 3 numbers, found an array of 2");
   EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [1, 2, true]}])")),
             kFile + ": lights[0].position[2]: expected a number, found a boolean");
-  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0]], "faces": [[0,0,0]]}, "casts_shadows": 1}])")),
-            kFile + ": models[0].casts_shadows: expected true or false, found an integer");
-  EXPECT_EQ(scene_error(std::string("{\"camera\": {\"eye\": [0,0,5], \"look_at\": [0,0,0], \"width\": 640.5}, \"models\": [") +
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"polygons": {"vertices": [[0,0,0]], "faces": [[0,0,0]]}, "casts_shadows": 1}])")),
+      kFile + ": models[0].casts_shadows: expected true or false, found an integer");
+  EXPECT_EQ(scene_error(std::string("{\"camera\": {\"eye\": [0,0,5], \"look_at\": [0,0,0], "
+                                    "\"width\": 640.5}, \"models\": [") +
                         kTriangle + "]}"),
             kFile + ": camera.width: expected an integer, found a number");
 }
@@ -151,16 +157,25 @@ TEST(SceneIo, NonFiniteNumbersAreRefused) {
                           kFile + ":1:"));
   // 1e999 overflows a double: named by its field path.
   const std::string msg = scene_error(scene(R"([{"type": "point", "position": [1, 2, 1e999]}])"));
-  EXPECT_TRUE(starts_with(msg, kFile + ": lights[0].position[2]: number 1e999 is not a finite double")) << msg;
+  EXPECT_TRUE(
+      starts_with(msg, kFile + ": lights[0].position[2]: number 1e999 is not a finite double"))
+      << msg;
 }
 
 TEST(SceneIo, OutOfRangeFaceIndexNamesField) {
-  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2],[0,1,3]]}}])")),
-            kFile + ": models[0].polygons.faces[1][2]: vertex index 3 out of range: 3 vertices");
-  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,-1]]}}])")),
-            kFile + ": models[0].polygons.faces[0][2]: vertex index -1 out of range: 3 vertices");
-  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1]]}}])")),
-            kFile + ": models[0].polygons.faces[0]: face has 2 vertices; at least 3 are needed");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2],[0,1,3]]}}])")),
+      kFile + ": models[0].polygons.faces[1][2]: vertex index 3 out of range: 3 vertices");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,-1]]}}])")),
+      kFile + ": models[0].polygons.faces[0][2]: vertex index -1 out of range: 3 vertices");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1]]}}])")),
+      kFile + ": models[0].polygons.faces[0]: face has 2 vertices; at least 3 are needed");
 }
 
 TEST(SceneIo, EmptyMeshIsAnError) {
@@ -172,10 +187,12 @@ TEST(SceneIo, EmptyMeshIsAnError) {
 TEST(SceneIo, MeshErrorNamesFieldAndMeshLine) {
   const std::string mesh = (kScenes / "meshes/bad_index.obj").string();
   EXPECT_EQ(scene_error(scene("[]", R"([{"mesh": "meshes/bad_index.obj"}])")),
-            kFile + ": models[0].mesh: " + mesh + ":5: face index 9 out of range: 3 vertices defined so far");
+            kFile + ": models[0].mesh: " + mesh +
+                ":5: face index 9 out of range: 3 vertices defined so far");
   const std::string missing = (kScenes / "meshes/nothing.off").string();
   EXPECT_EQ(scene_error(scene("[]", R"([{"mesh": "meshes/nothing.off"}])")),
-            kFile + ": models[0].mesh: " + missing + ": cannot open mesh file: No such file or directory");
+            kFile + ": models[0].mesh: " + missing +
+                ": cannot open mesh file: No such file or directory");
 }
 
 TEST(SceneIo, UnknownLightType) {
@@ -186,9 +203,11 @@ TEST(SceneIo, UnknownLightType) {
 }
 
 TEST(SceneIo, UnknownFieldIsAnError) {
-  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 5, 0], "light_ends": 3}])")),
-            kFile + ": lights[0].light_ends: unknown field 'light_ends'; expected one of type, position, "
-                    "intensity, dec_begin, light_end, decrease");
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "point", "position": [0, 5, 0], "light_ends": 3}])")),
+      kFile +
+          ": lights[0].light_ends: unknown field 'light_ends'; expected one of type, position, "
+          "intensity, dec_begin, light_end, decrease");
   EXPECT_TRUE(starts_with(scene_error(std::string("{") + kCamera + ", \"model\": []}"),
                           kFile + ": model: unknown field 'model'"));
 }
@@ -196,13 +215,15 @@ TEST(SceneIo, UnknownFieldIsAnError) {
 TEST(SceneIo, MissingCamera) {
   EXPECT_EQ(scene_error(std::string("{\"models\": [") + kTriangle + "]}"),
             kFile + ": camera: missing required field 'camera'");
-  EXPECT_EQ(scene_error(std::string("{\"camera\": {\"eye\": [0, 0, 1]}, \"models\": [") + kTriangle + "]}"),
+  EXPECT_EQ(scene_error(std::string("{\"camera\": {\"eye\": [0, 0, 1]}, \"models\": [") +
+                        kTriangle + "]}"),
             kFile + ": camera.look_at: missing required field 'look_at'");
 }
 
 TEST(SceneIo, CameraRanges) {
   auto camera = [](const std::string& fields) {
-    return scene_error(std::string("{\"camera\": {") + fields + "}, \"models\": [" + kTriangle + "]}");
+    return scene_error(std::string("{\"camera\": {") + fields + "}, \"models\": [" + kTriangle +
+                       "]}");
   };
   EXPECT_EQ(camera(R"("eye": [1, 2, 3], "look_at": [1, 2, 3])"),
             kFile + ": camera.look_at: equals camera.eye: there is no view direction");
@@ -217,28 +238,43 @@ TEST(SceneIo, CameraRanges) {
 }
 
 TEST(SceneIo, LightRules) {
-  EXPECT_EQ(scene_error(scene(R"([{"type": "directional", "direction": [0, -1, 0], "light_end": 5}])")),
-            kFile + ": lights[0].light_end: 'light_end' means nothing for a directional light");
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "directional", "direction": [0, -1, 0], "decrease": 2}])")),
+      kFile + ": lights[0].decrease: 'decrease' means nothing for a directional light");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "directional", "position": [0, -1, 0]}])")),
+            kFile +
+                ": lights[0].position: unknown field 'position'; expected one of type, "
+                "direction, intensity");
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "directional", "direction": [0, -1, 0], "light_end": 5}])")),
+      kFile + ": lights[0].light_end: 'light_end' means nothing for a directional light");
   EXPECT_EQ(scene_error(scene(R"([{"type": "directional", "direction": [0, 0, 0]}])")),
             kFile + ": lights[0].direction: must not be the zero vector");
-  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 0, 0], "dec_begin": 5, "light_end": 4}])")),
+  EXPECT_EQ(scene_error(scene(
+                R"([{"type": "point", "position": [0, 0, 0], "dec_begin": 5, "light_end": 4}])")),
             kFile + ": lights[0].light_end: must be >= dec_begin");
   EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 0, 0], "light_end": 0}])")),
             kFile + ": lights[0].light_end: must be > 0");
   EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 0, 0], "decrease": -1}])")),
             kFile + ": lights[0].decrease: must be an integer in [0, 2147483647]");
-  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 0, 0], "intensity": [1, -0.5, 1]}])")),
+  EXPECT_EQ(scene_error(
+                scene(R"([{"type": "point", "position": [0, 0, 0], "intensity": [1, -0.5, 1]}])")),
             kFile + ": lights[0].intensity[1]: must be >= 0");
 }
 
 TEST(SceneIo, ModelRules) {
   EXPECT_EQ(scene_error(scene("[]", R"([{"name": "a"}])")),
             kFile + ": models[0]: needs exactly one of 'mesh' or 'polygons'");
-  EXPECT_EQ(scene_error(scene("[]", std::string("[") + kTriangle + R"(, {"mesh": "meshes/quad.off", "transform": {"scale": [1, 0, 1]}}])")),
+  EXPECT_EQ(scene_error(scene(
+                "[]", std::string("[") + kTriangle +
+                          R"(, {"mesh": "meshes/quad.off", "transform": {"scale": [1, 0, 1]}}])")),
             kFile + ": models[1].transform.scale: must not be zero");
   // 1 · 1e308 + 1.7e308 overflows.
-  EXPECT_EQ(scene_error(scene("[]", R"([{"mesh": "meshes/quad.off", "transform": {"scale": 1e308, "translate": [1.7e308, 0, 0]}}])")),
-            kFile + ": models[0].transform: a transformed vertex is not finite");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"mesh": "meshes/quad.off", "transform": {"scale": 1e308, "translate": [1.7e308, 0, 0]}}])")),
+      kFile + ": models[0].transform: a transformed vertex is not finite");
 }
 
 }  // namespace

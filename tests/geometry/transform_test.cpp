@@ -1,5 +1,4 @@
 #include <geometry/transform.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -64,9 +63,12 @@ TEST(Transform, OrderWithGeneralAngles) {
   t.scale = {0.5, 2, -3};
   t.rotate_deg = {30, 45, 60};
   t.translate = {0.1, 0.2, 0.3};
-  const double cx = std::cos(30 * std::numbers::pi / 180.0), sx = std::sin(30 * std::numbers::pi / 180.0);
-  const double cy = std::cos(45 * std::numbers::pi / 180.0), sy = std::sin(45 * std::numbers::pi / 180.0);
-  const double cz = std::cos(60 * std::numbers::pi / 180.0), sz = std::sin(60 * std::numbers::pi / 180.0);
+  const double cx = std::cos(30 * std::numbers::pi / 180.0),
+               sx = std::sin(30 * std::numbers::pi / 180.0);
+  const double cy = std::cos(45 * std::numbers::pi / 180.0),
+               sy = std::sin(45 * std::numbers::pi / 180.0);
+  const double cz = std::cos(60 * std::numbers::pi / 180.0),
+               sz = std::sin(60 * std::numbers::pi / 180.0);
   // s·p for p = (1, 2, 3)
   const double x0 = 0.5 * 1, y0 = 2.0 * 2, z0 = -3.0 * 3;
   // about x
