@@ -1,0 +1,49 @@
+// Entry points of the mesh readers: reading the file, choosing the format by
+// extension, and the checks every format shares. The formats themselves live
+// in off_reader.cpp, obj_reader.cpp, ply_reader.cpp and stl_reader.cpp.
+#include <geometry/mesh_io.h>
+#include <geometry/mesh_reader_util.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <system_error>
+
+namespace umbra::geometry {
+
+PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::path& name) {
+  const std::string where = name.string();
+  const std::string extension = detail::to_lower(name.extension().string());
+  PolygonSoup soup;
+  if (extension == ".off") {
+    soup = detail::parse_off(bytes, where);
+  } else if (extension == ".obj") {
+    soup = detail::parse_obj(bytes, where);
+  } else if (extension == ".ply") {
+    soup = detail::parse_ply(bytes, where);
+  } else if (extension == ".stl") {
+    soup = detail::parse_stl(bytes, where);
+  } else {
+    throw InputError(where, "unknown mesh extension '" + name.extension().string() +
+                                "'; expected .off, .obj, .ply or .stl");
+  }
+  if (soup.polygons.empty()) throw InputError(where, "empty mesh: the file has no polygon");
+  return soup;
+}
+
+PolygonSoup read_polygon_soup(const std::filesystem::path& file) {
+  const std::string where = file.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw InputError(where, "cannot read mesh: is a directory");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(where, std::string("cannot open mesh file: ") + std::strerror(errno));
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(where, "cannot read mesh file: I/O error");
+  return parse_polygon_soup(bytes, file);
+}
+
+}  // namespace umbra::geometry
