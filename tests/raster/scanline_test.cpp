@@ -421,20 +421,25 @@ TEST(ScanlineUncertainty, RandomSceneCertainPixelsMatchBruteForce) {
 // edges the same way; a surface coplanar with part of the mesh. Many pixels
 // must be flagged, and every other one must still be right.
 TEST(ScanlineUncertainty, AdversarialMeshCertainPixelsMatchBruteForce) {
-  const CameraFrame frame = random_scene_camera(48, 36);
+  const CameraFrame frame = random_scene_camera(64, 48);
   std::mt19937_64 rng(11);
   const auto vertex = [&](int i, int j, double s) {
     return frame.eye + s * geometry::sample_ray(frame, i, j).direction;
   };
   std::vector<RasterPolygon> polys;
-  const int step = 6;
+  // Grid vertex (gi, gj) on the ray of pixel (7·gi + gj mod 2, 5·gj + gi mod 3),
+  // offset per layer: neighbouring vertices differ by coprime pixel steps, so
+  // an edge passes through the centres at its ends (and a few between).
   for (int layer = 0; layer < 2; ++layer) {
     std::vector<std::vector<Vec3>> grid;
-    for (int gj = 0; gj <= 36 / step; ++gj) {
+    for (int gj = 0; gj < 9; ++gj) {
       grid.emplace_back();
-      for (int gi = 0; gi <= 48 / step; ++gi) {
-        const int i = std::min(gi * step + layer * 3, 47), j = std::min(gj * step + layer * 2, 35);
-        grid.back().push_back(vertex(i, j, layer == 0 ? 6.0 + static_cast<double>(rng() % 4) : 2.0 + static_cast<double>(rng() % 3)));
+      for (int gi = 0; gi < 9; ++gi) {
+        const int i = std::min(7 * gi + gj % 2 + layer * 3, 63);
+        const int j = std::min(5 * gj + gi % 3 + layer * 2, 47);
+        const double s = layer == 0 ? 6.0 + static_cast<double>(rng() % 4)
+                                    : 2.0 + static_cast<double>(rng() % 3);
+        grid.back().push_back(vertex(i, j, s));
       }
     }
     for (std::size_t gj = 0; gj + 1 < grid.size(); ++gj)
@@ -455,7 +460,7 @@ TEST(ScanlineUncertainty, AdversarialMeshCertainPixelsMatchBruteForce) {
   polys.push_back(twin);
   const ScanlineResult r = scanline_render(frame, polys, 2, 2);
   const int uncertain = expect_matches_reference(frame, polys, 2, r);
-  std::cout << uncertain << " uncertain of " << 48 * 36 << " pixels\n";
+  std::cout << uncertain << " uncertain of " << 64 * 48 << " pixels\n";
   EXPECT_GT(uncertain, 40);
 }
 
