@@ -1,0 +1,463 @@
+// Bouknight's scanline algorithm with Crow's shadow polygons in the same
+// sorts (Bergeron 1986, "Displaying shadows in image space"):
+//   1. every polygon goes to camera space, is clipped at z = z_near and
+//      projected (projected_polygon.cpp);
+//   2. a y bucket sort of the edges by their first scanline; per scanline an
+//      active edge list kept by scanline coherence, its crossings x-sorted by
+//      insertion sort (nearly sorted from the previous line), spans between
+//      consecutive crossings, each polygon toggled even-odd at its crossings;
+//   3. in each span a depth-ordered list of its active polygons, re-sorted by
+//      insertion at every pixel (point-to-point coherence): the first surface
+//      is visible, each shadow polygon before it adds its signed Nb_C.
+// Then, per scanline, every pixel that a floating-point decision could have
+// got wrong is flagged `uncertain`; the bounds are stated where they are used.
+#include <raster/scanline.h>
+
+#include <raster/projected_polygon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace umbra::raster {
+namespace detail {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Rows r with centre r + 0.5 in [y0, y1), clamped to [0, height): the
+/// half-open rule every edge uses, so two edges sharing a vertex agree on
+/// which of them crosses a row through that vertex (watertight parity).
+struct RowRange {
+  int first = 0, last = -1;
+};
+RowRange active_rows(double y0, double y1, int height) {
+  const double lo = std::ceil(std::min(y0, y1) - 0.5);
+  const double hi = std::ceil(std::max(y0, y1) - 0.5) - 1;
+  RowRange r;
+  r.first = lo < 0 ? 0 : (lo > height ? height : static_cast<int>(lo));
+  r.last = hi < -1 ? -1 : (hi > height - 1 ? height - 1 : static_cast<int>(hi));
+  return r;
+}
+/// Column index clamped to [0, width]; NaN goes to 0.
+int clamp_column(double c, int width) {
+  if (!(c > 0)) return 0;
+  if (c > width) return width;
+  return static_cast<int>(c);
+}
+
+/// An edge in the y bucket sort, with the rows on which it is active and the
+/// wider range of rows whose pixels may lie close enough to it to be flagged.
+struct TableEdge {
+  ProjectedEdge edge;
+  RowRange scan;
+  RowRange near;
+  double near_margin = 0;  ///< half-width (pixels) of the strip round the edge examined for uncertainty
+};
+
+/// Everything the bands share, read-only once built.
+struct Scene {
+  CameraSpace camera;
+  std::vector<ProjectedPolygon> polygons;
+  std::vector<TableEdge> edges;
+  std::vector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
+  std::vector<std::size_t> scan_bucket;    ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
+  std::vector<std::uint32_t> by_near_row;
+  std::vector<std::size_t> near_bucket;
+  std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
+  std::size_t lights = 0;
+};
+
+void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range, int height,
+                 std::vector<std::uint32_t>& order, std::vector<std::size_t>& bucket) {
+  bucket.assign(static_cast<std::size_t>(height) + 2, 0);
+  for (const TableEdge& e : edges)
+    if ((e.*range).first <= (e.*range).last) ++bucket[(e.*range).first + 1];
+  for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
+  order.assign(bucket[height], 0);
+  std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+  for (std::uint32_t k = 0; k < edges.size(); ++k)
+    if ((edges[k].*range).first <= (edges[k].*range).last) order[fill[(edges[k].*range).first]++] = k;
+}
+
+Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+              std::size_t lights) {
+  Scene scene;
+  scene.lights = lights;
+  scene.camera = make_camera_space(frame, input);
+  const CameraSpace& camera = scene.camera;
+  scene.polygons.reserve(input.size());
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].light >= lights)
+      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
+                                  " names light " + std::to_string(input[k].light) + " of " +
+                                  std::to_string(lights));
+    scene.polygons.push_back(project_polygon(input[k], static_cast<std::uint32_t>(k), camera));
+  }
+  const double ah = frame.a * frame.h;
+  // |d| / |d_z| over all sample rays, with 1% slack for rounding.
+  const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
+  for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
+    const ProjectedPolygon& polygon = scene.polygons[k];
+    if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
+    for (const ProjectedEdge& e : polygon.edges) {
+      TableEdge t;
+      t.edge = e;
+      t.scan = active_rows(e.ya, e.yb, frame.height);
+      // The strip examined round the edge must hold every pixel whose centre
+      // can pass the distance test below: 1e-6 px, the largest value of the
+      // rounding term 1e-12·m_scale·|d| in pixels, and the endpoints' own
+      // errors; plus one pixel of plain slack.
+      const double hyp = std::hypot(e.m.x, e.m.y);
+      const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
+      t.near_margin = 1.0 + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
+      if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
+      t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin,
+                           std::max(e.ya, e.yb) + t.near_margin, frame.height);
+      // active_rows is half-open at the bottom; the strip is closed.
+      if (t.near.last < frame.height - 1 &&
+          t.near.last + 1 + 0.5 <= std::max(e.ya, e.yb) + t.near_margin)
+        ++t.near.last;
+      scene.edges.push_back(t);
+    }
+  }
+  bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket);
+  bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket);
+  return scene;
+}
+
+/// Two depths that decide something are "too close to call" when they differ
+/// by at most δ_z = 1e-9·max(|t1|, |t2|, z_near) (the project's bound: far
+/// above double rounding for well-conditioned planes) plus both depths' own
+/// error bounds (ProjectedPolygon::depth_error, which grows for planes seen
+/// at grazing angles or nearly through the eye, where 1e-9 alone is unsound).
+bool too_close(double t1, double e1, double t2, double e2, double z_near) {
+  const double delta = 1e-9 * std::max({std::abs(t1), std::abs(t2), z_near});
+  return !(std::abs(t1 - t2) > delta + e1 + e2);
+}
+
+struct DepthEntry {
+  double t;
+  double err;
+  std::uint32_t polygon;
+};
+bool before(const DepthEntry& a, const DepthEntry& b) {
+  // Ties in depth are broken by index so that the order (hence the visible
+  // id reported for an uncertain pixel) never depends on the band layout.
+  return a.t < b.t || (a.t == b.t && a.polygon < b.polygon);
+}
+
+/// One band of scanlines [row0, row1), with its own active edge list.
+class Band {
+ public:
+  Band(const Scene& scene, ScanlineResult& result)
+      : scene_(scene), result_(result),
+        inside_(scene.polygons.size(), 0), slot_(scene.polygons.size(), 0) {}
+
+  void run(int row0, int row1) {
+    const int width = scene_.camera.frame.width;
+    ray_.resize(width);
+    visible_error_.resize(width);
+    // Start the active edge list at row0: every edge active there.
+    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
+      const std::uint32_t e = scene_.by_scan_row[k];
+      if (scene_.edges[e].scan.last >= row0) crossings_.push_back({0, e});
+    }
+    for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k) {
+      const std::uint32_t e = scene_.by_near_row[k];
+      if (scene_.edges[e].near.last >= row0) near_edges_.push_back(e);
+    }
+    for (int j = row0; j < row1; ++j) {
+      if (j > row0) {
+        for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
+          crossings_.push_back({0, scene_.by_scan_row[k]});
+        for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
+          near_edges_.push_back(scene_.by_near_row[k]);
+      }
+      std::erase_if(crossings_, [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
+      std::erase_if(near_edges_, [&](std::uint32_t e) { return scene_.edges[e].near.last < j; });
+      scan_row(j);
+    }
+  }
+
+ private:
+  struct Crossing {
+    double x;
+    std::uint32_t edge;
+  };
+
+  std::size_t pixel(int i, int j) const {
+    return static_cast<std::size_t>(j) * scene_.camera.frame.width + static_cast<std::size_t>(i);
+  }
+
+  /// Pixel x at which edge e crosses row j's centre line, from the edge's
+  /// homogeneous line (well conditioned even when an endpoint was clipped far
+  /// off screen); endpoint interpolation only for a line with m.x = 0.
+  double crossing_x(const ProjectedEdge& e, int j) const {
+    const double sy = scene_.camera.row_screen_y(j);
+    const double sx = -(e.m.y * sy + e.m.z) / e.m.x;
+    double x = scene_.camera.pixel_x(sx);
+    if (!std::isfinite(x)) {
+      const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
+      x = e.xa + lambda * (e.xb - e.xa);
+    }
+    return x;
+  }
+
+  void scan_row(int j) {
+    const CameraSpace& camera = scene_.camera;
+    const int width = camera.frame.width;
+    for (int i = 0; i < width; ++i) {
+      ray_[i] = camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
+      const std::size_t p = pixel(i, j);
+      result_.visible[p] = -1;
+      result_.depth[p] = kInfinity;
+      result_.uncertain[p] = 0;
+      visible_error_[i] = 0;
+      for (std::size_t l = 0; l < scene_.lights; ++l) result_.count[p * scene_.lights + l] = 0;
+    }
+    // x sort: insertion sort of the active edges' crossings, nearly sorted
+    // already since the previous row.
+    for (Crossing& c : crossings_) c.x = crossing_x(scene_.edges[c.edge].edge, j);
+    for (std::size_t k = 1; k < crossings_.size(); ++k) {
+      const Crossing c = crossings_[k];
+      std::size_t m = k;
+      for (; m > 0 && (crossings_[m - 1].x > c.x ||
+                       (crossings_[m - 1].x == c.x && crossings_[m - 1].edge > c.edge));
+           --m)
+        crossings_[m] = crossings_[m - 1];
+      crossings_[m] = c;
+    }
+    // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
+    for (std::size_t k = 0; k < crossings_.size(); ++k) {
+      toggle(scene_.edges[crossings_[k].edge].edge.polygon);
+      if (k + 1 == crossings_.size() || active_.empty()) continue;
+      const int i0 = clamp_column(std::ceil(crossings_[k].x - 0.5), width);
+      const int i1 = clamp_column(std::ceil(crossings_[k + 1].x - 0.5), width);
+      if (i0 < i1) shade_span(i0, i1, j);
+    }
+    // Each polygon has an even number of active edges on a row, so every
+    // toggle is undone by now; clear anyway so one bad row cannot leak.
+    for (std::uint32_t polygon : active_) inside_[polygon] = 0;
+    active_.clear();
+
+    flag_near_edges(j);
+    flag_degenerate(j);
+  }
+
+  void toggle(std::uint32_t polygon) {
+    if (inside_[polygon]) {
+      inside_[polygon] = 0;
+      const std::uint32_t last = active_.back();
+      active_[slot_[polygon]] = last;
+      slot_[last] = slot_[polygon];
+      active_.pop_back();
+    } else {
+      inside_[polygon] = 1;
+      slot_[polygon] = static_cast<std::uint32_t>(active_.size());
+      active_.push_back(polygon);
+    }
+  }
+
+  /// One span: a depth-ordered list of its polygons, kept in order pixel to
+  /// pixel by insertion sort (depths along a span change little).
+  void shade_span(int i0, int i1, int j) {
+    const double z_near = scene_.camera.z_near;
+    order_.clear();
+    for (std::uint32_t polygon : active_) order_.push_back({0, 0, polygon});
+    for (int i = i0; i < i1; ++i) {
+      const Vec3& d = ray_[i];
+      for (DepthEntry& entry : order_) {
+        const ProjectedPolygon& polygon = scene_.polygons[entry.polygon];
+        entry.t = polygon.depth(d);
+        if (std::isnan(entry.t)) entry.t = kInfinity;  // ray in the plane; flagged below
+        entry.err = polygon.depth_error(d, entry.t);
+      }
+      for (std::size_t k = 1; k < order_.size(); ++k) {
+        const DepthEntry e = order_[k];
+        std::size_t m = k;
+        for (; m > 0 && before(e, order_[m - 1]); --m) order_[m] = order_[m - 1];
+        order_[m] = e;
+      }
+      // Visible: the first surface with t > 0.
+      const DepthEntry* visible = nullptr;
+      for (const DepthEntry& e : order_)
+        if (e.t > 0 && scene_.polygons[e.polygon].kind == RasterPolygon::Kind::surface) {
+          visible = &e;
+          break;
+        }
+      const double t_visible = visible ? visible->t : kInfinity;
+      const std::size_t p = pixel(i, j);
+      bool uncertain = false;
+      for (const DepthEntry& e : order_) {
+        const ProjectedPolygon& polygon = scene_.polygons[e.polygon];
+        // A depth error bound that is not finite means the ray (nearly) lies
+        // in the polygon's plane: nothing about this polygon is decided.
+        if (!std::isfinite(e.err)) uncertain = true;
+        // t against 0: in front of the eye or behind it.
+        if (too_close(e.t, e.err, 0.0, 0.0, z_near)) uncertain = true;
+        // t against the visible depth: which surface is in front, or whether
+        // a shadow polygon is pierced before the visible point.
+        if (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near))
+          uncertain = true;
+        if (polygon.kind == RasterPolygon::Kind::shadow && e.t > 0 && e.t < t_visible)
+          result_.count[p * scene_.lights + polygon.light] += polygon.weight;
+      }
+      if (visible) {
+        result_.visible[p] = scene_.polygons[visible->polygon].id;
+        result_.depth[p] = visible->t;
+        visible_error_[i] = visible->err;
+      }
+      if (uncertain) result_.uncertain[p] = 1;
+    }
+  }
+
+  /// The span walk above decides, for each polygon and pixel, on which side of
+  /// each of the polygon's projected edges the pixel centre lies. Flag every
+  /// pixel whose centre lies within δ_xy = 1e-6 pixel of the line of an edge
+  /// of a polygon that matters to it (a surface not clearly behind the visible
+  /// point, any shadow polygon not clearly behind it), measured as a distance,
+  /// not along the row, so nearly horizontal edges are caught too.
+  ///
+  /// The test is on the homogeneous line m of the edge: the screen distance
+  /// from the pixel centre q = d/d_z to the line is |m·d| / (|d_z|·|(m_x, m_y)|).
+  /// Besides 1e-6 pixel we allow the rounding error of m·d itself: m = Pa × Pb
+  /// from camera-space points each within a few ε·mag of exact, so
+  /// |Δ(m·d)| ≤ few·ε·mag·(|Pa| + |Pb|)·|d|, which 1e-12·m_scale·|d| bounds
+  /// generously. This replaces "1e-6 × the coordinates involved": huge
+  /// projected coordinates of clipped vertices do not enter it.
+  ///
+  /// Where the row passes within an endpoint's pixel error of that endpoint,
+  /// whether the edge is active on the row at all was decided in rounded
+  /// arithmetic; the pixels whose answer that can change lie within that
+  /// error of the edge's line, so the threshold grows by it on that row only.
+  void flag_near_edges(int j) {
+    const CameraSpace& camera = scene_.camera;
+    const int width = camera.frame.width;
+    const double row_y = j + 0.5;
+    for (std::uint32_t k : near_edges_) {
+      const TableEdge& table_edge = scene_.edges[k];
+      const ProjectedEdge& e = table_edge.edge;
+      double extra = 0;
+      if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
+      if (std::abs(row_y - e.yb) <= e.err_b) extra = std::max(extra, e.err_b);
+      const double margin = table_edge.near_margin + extra;
+      // Pixels of this row within `margin` of the segment: the segment's part
+      // in the strip |y − row_y| ≤ margin, widened by margin.
+      const double y_lo = row_y - margin, y_hi = row_y + margin;
+      if (std::max(e.ya, e.yb) < y_lo || std::min(e.ya, e.yb) > y_hi) continue;
+      double x_lo, x_hi;
+      if (e.ya == e.yb) {
+        x_lo = std::min(e.xa, e.xb);
+        x_hi = std::max(e.xa, e.xb);
+      } else {
+        const double l0 = std::clamp((y_lo - e.ya) / (e.yb - e.ya), 0.0, 1.0);
+        const double l1 = std::clamp((y_hi - e.ya) / (e.yb - e.ya), 0.0, 1.0);
+        const double xa = e.xa + l0 * (e.xb - e.xa), xb = e.xa + l1 * (e.xb - e.xa);
+        x_lo = std::min(xa, xb);
+        x_hi = std::max(xa, xb);
+      }
+      const int i0 = clamp_column(std::ceil(x_lo - margin - 0.5), width);
+      const int i1 = clamp_column(std::floor(x_hi + margin - 0.5) + 1, width);
+      const ProjectedPolygon& polygon = scene_.polygons[e.polygon];
+      const double hyp = std::hypot(e.m.x, e.m.y);
+      for (int i = i0; i < i1; ++i) {
+        const std::size_t p = pixel(i, j);
+        if (result_.uncertain[p]) continue;
+        const Vec3& d = ray_[i];
+        const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * hyp +
+                                 1e-12 * e.m_scale * length(d);
+        if (std::abs(dot(e.m, d)) > threshold) continue;
+        if (matters(polygon, i, p)) result_.uncertain[p] = 1;
+      }
+    }
+  }
+
+  /// Could this polygon change pixel p's answer if the pixel were on the other
+  /// side of one of its edges? Not if it is clearly behind the visible point.
+  bool matters(const ProjectedPolygon& polygon, int i, std::size_t p) const {
+    if (result_.visible[p] < 0) return true;
+    const Vec3& d = ray_[i];
+    double t = polygon.depth(d);
+    if (std::isnan(t)) return true;
+    const double err = polygon.depth_error(d, t);
+    const double t_visible = result_.depth[p];
+    return !(t > t_visible &&
+             !too_close(t, err, t_visible, visible_error_[i], scene_.camera.z_near));
+  }
+
+  /// A polygon with no projected area is not drawn; every pixel of its
+  /// bounding box (plus a pixel) is flagged, whatever its depth.
+  void flag_degenerate(int j) {
+    const int width = scene_.camera.frame.width;
+    const double row_y = j + 0.5;
+    for (std::uint32_t k : scene_.degenerate) {
+      const ProjectedPolygon& polygon = scene_.polygons[k];
+      if (row_y < polygon.bbox_y0 - 1 || row_y > polygon.bbox_y1 + 1) continue;
+      const int i0 = clamp_column(std::ceil(polygon.bbox_x0 - 1.5), width);
+      const int i1 = clamp_column(std::floor(polygon.bbox_x1 + 0.5) + 1, width);
+      for (int i = i0; i < i1; ++i) result_.uncertain[pixel(i, j)] = 1;
+    }
+  }
+
+  const Scene& scene_;
+  ScanlineResult& result_;
+  std::vector<Crossing> crossings_;       // the active edge list, x-sorted
+  std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
+  std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
+  std::vector<std::uint32_t> slot_;        // per polygon: its place in active_
+  std::vector<std::uint32_t> active_;      // polygons inside at the current span
+  std::vector<DepthEntry> order_;          // the span's depth-ordered list
+  std::vector<Vec3> ray_;                  // the row's sample directions in camera space
+  std::vector<double> visible_error_;      // depth error bound of each pixel's visible hit
+};
+
+}  // namespace
+}  // namespace detail
+
+ScanlineResult scanline_render(const geometry::CameraFrame& frame,
+                               std::span<const RasterPolygon> polygons, std::size_t lights,
+                               unsigned threads) {
+  if (frame.width <= 0 || frame.height <= 0)
+    throw std::invalid_argument("scanline_render: image size must be positive, got " +
+                                std::to_string(frame.width) + "x" + std::to_string(frame.height));
+  const detail::Scene scene = detail::prepare(frame, polygons, lights);
+
+  ScanlineResult result;
+  result.width = frame.width;
+  result.height = frame.height;
+  result.lights = lights;
+  const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
+  result.visible.assign(pixels, -1);
+  result.depth.assign(pixels, std::numeric_limits<double>::infinity());
+  result.count.assign(pixels * lights, 0);
+  result.uncertain.assign(pixels, 0);
+
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  const int bands = static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
+  // Each row is computed from the shared read-only scene alone, so the split
+  // into bands cannot change any value: results are identical for any count.
+  const auto run_band = [&](int b) {
+    const int row0 = static_cast<int>(static_cast<long long>(frame.height) * b / bands);
+    const int row1 = static_cast<int>(static_cast<long long>(frame.height) * (b + 1) / bands);
+    detail::Band band(scene, result);
+    band.run(row0, row1);
+  };
+  {
+    std::vector<std::jthread> workers;
+    for (int b = 1; b < bands; ++b) workers.emplace_back(run_band, b);
+    run_band(0);
+  }
+
+  // A polygon within near_radius of the eye may be met by sample rays at
+  // z < z_near, which the clipping removed: nothing is certain then.
+  const bool near_eye = std::any_of(scene.polygons.begin(), scene.polygons.end(),
+                                    [](const detail::ProjectedPolygon& p) { return p.near_eye; });
+  if (near_eye) std::fill(result.uncertain.begin(), result.uncertain.end(), 1);
+  return result;
+}
+
+}  // namespace umbra::raster
