@@ -22,7 +22,7 @@ struct RasterPolygon {
   /// shadow only: view-independent weight, added when the eye ray crosses the
   /// polygon from the side on which its vertices run counter-clockwise,
   /// subtracted when it crosses from the other side.
-  std::int8_t nb_c = 0;
+  std::int32_t nb_c = 0;
 };
 
 struct ScanlineResult {
