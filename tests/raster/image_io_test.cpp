@@ -177,13 +177,24 @@ TEST_F(ImageIoTest, WritingIntoAMissingDirectoryThrowsAndLeavesNoFile) {
   EXPECT_TRUE(listing().empty());
 }
 
-TEST_F(ImageIoTest, FailedWriteKeepsThePreviousFileWhole) {
+TEST_F(ImageIoTest, TargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
   // The target is a directory: the write succeeds into the temporary, the
   // rename fails, and neither the temporary nor a changed target remains.
   const fs::path path = dir_ / "taken.exr";
   fs::create_directory(path);
   EXPECT_THROW(write_frame(patterned_frame(2, 2, 1), path), geometry::InputError);
   EXPECT_TRUE(fs::is_directory(path));
+  EXPECT_EQ(listing().size(), 1u);
+}
+
+TEST_F(ImageIoTest, RewritingReplacesTheFileWhole) {
+  const fs::path path = dir_ / "frame.exr";
+  write_frame(patterned_frame(4, 4, 3), path);
+  write_frame(patterned_frame(2, 3, 1), path);
+  const ShadowChannels read = read_shadow_channels(path);
+  EXPECT_EQ(read.width, 2);
+  EXPECT_EQ(read.height, 3);
+  EXPECT_EQ(read.shadow.size(), 1u);
   EXPECT_EQ(listing().size(), 1u);
 }
 
