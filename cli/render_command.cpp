@@ -1,0 +1,108 @@
+#include <cli/exit_codes.h>
+#include <cli/output_files.h>
+#include <cli/parse_checks.h>
+#include <cli/render_command.h>
+#include <cli/stats_json.h>
+#include <fmt/format.h>
+#include <geometry/scene_io.h>
+#include <raster/image_io.h>
+#include <raster/render.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace umbra::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The parser has already restricted `name` to these (case-insensitively,
+/// and CLI11 hands back the canonical spelling).
+raster::Method parse_method(const std::string& name) {
+  return name == "exact" ? raster::Method::exact : raster::Method::volume;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene with its shadows");
+  cmd->add_option("SCENE", args.scene, "Scene file (.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args.output,
+                  "Output image: .png (beauty) or .exr (beauty + shadow.<i>, count.<i>, depth); "
+                  "default <scene stem>.png in the current directory")
+      ->type_name("OUT");
+  cmd->add_option("--method", args.method, "Shadow method: volume (default) or exact")
+      ->transform(CLI::IsMember({"volume", "exact"}, CLI::ignore_case))
+      ->type_name("METHOD");
+  cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
+      ->check(thread_count())
+      ->type_name("N");
+  cmd->add_option("--stats-json", args.stats_json,
+                  "Write timings per phase and counts as JSON to FILE ('-' = stdout)")
+      ->type_name("FILE");
+  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  cmd->footer(
+      "Example:\n"
+      "  umbra render data/scenes/default.json -o out/default.exr --stats-json out/stats.json\n"
+      "Files are written only when everything succeeded.");
+  return cmd;
+}
+
+int run_render(const RenderArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path scene_path = args.scene;
+  const fs::path output =
+      args.output.empty() ? fs::path(scene_path.stem().string() + ".png") : fs::path(args.output);
+  const bool stats_to_stdout = args.stats_json == "-";
+
+  // Cheap checks first: a long render must not end in "unknown extension".
+  check_output_path(output, {".png", ".exr"});
+  if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});
+
+  RenderTimings timings;
+  auto phase = std::chrono::steady_clock::now();
+  const geometry::Scene scene = geometry::load_scene(scene_path);
+  timings.load = seconds_since(phase);
+
+  raster::RenderOptions options;
+  options.method = parse_method(args.method);
+  options.threads = args.threads;
+  raster::RenderStats stats;
+  phase = std::chrono::steady_clock::now();
+  const raster::Frame frame = raster::render(scene, options, &stats);
+  timings.render = seconds_since(phase);
+
+  phase = std::chrono::steady_clock::now();
+  raster::write_frame(frame, output);
+  timings.write = seconds_since(phase);
+  timings.total = seconds_since(start);
+
+  if (!args.stats_json.empty()) {
+    RenderRun run;
+    run.scene = scene_path.string();
+    run.output = output.string();
+    run.method = args.method;
+    run.threads = args.threads;
+    run.width = frame.width;
+    run.height = frame.height;
+    run.lights = scene.lights.size();
+    run.models = scene.models.size();
+    emit_json(render_stats_json(run, stats, timings), args.stats_json);
+  }
+
+  if (!args.quiet) {
+    // With the statistics on stdout, keep stdout pure JSON.
+    std::FILE* stream = stats_to_stdout ? stderr : stdout;
+    fmt::print(stream, "wrote {} ({}x{}, {:.2f} s)\n", output.string(), frame.width, frame.height,
+               timings.total);
+  }
+  return kExitSuccess;
+}
+
+}  // namespace umbra::cli

@@ -1,0 +1,25 @@
+#pragma once
+// `umbra render SCENE [-o OUT] [--method volume|exact] [--threads N]
+//                     [--stats-json FILE] [--quiet]`
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace umbra::cli {
+
+struct RenderArgs {
+  std::string scene;
+  std::string output;             ///< empty: <scene stem>.png in the current directory
+  std::string method = "volume";  ///< "volume" or "exact" (checked by the parser)
+  unsigned threads = 0;           ///< 0: all hardware threads
+  std::string stats_json;         ///< empty: none; "-": stdout
+  bool quiet = false;
+};
+
+/// Adds the `render` subcommand to `app`, parsing into `args`.
+CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
+
+/// Loads, renders, writes. Returns the exit code; throws geometry::InputError
+/// on bad input (before any output file is written).
+int run_render(const RenderArgs& args);
+
+}  // namespace umbra::cli

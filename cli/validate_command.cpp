@@ -1,0 +1,124 @@
+#include <cli/exit_codes.h>
+#include <cli/output_files.h>
+#include <cli/parse_checks.h>
+#include <cli/stats_json.h>
+#include <cli/validate_command.h>
+#include <fmt/format.h>
+#include <geometry/scene_io.h>
+#include <raster/image_io.h>
+#include <raster/validate.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+namespace umbra::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Mask colours, written as they are (no gamma): agree, boundary, mismatch;
+/// pixels the validator did not check stay black.
+constexpr std::array<float, 3> kAgree = {0.15f, 0.15f, 0.15f};
+constexpr std::array<float, 3> kBoundary = {1.0f, 1.0f, 0.0f};
+constexpr std::array<float, 3> kMismatch = {1.0f, 0.0f, 0.0f};
+constexpr std::array<float, 3> kNotChecked = {0.0f, 0.0f, 0.0f};
+
+std::vector<float> mask_colours(const raster::ValidationReport& report) {
+  const std::size_t n = static_cast<std::size_t>(report.width) * report.height;
+  if (report.mask.size() != n)
+    throw std::logic_error(fmt::format("validate_render returned a mask of {} entries for {}x{}",
+                                       report.mask.size(), report.width, report.height));
+  std::vector<float> rgb;
+  rgb.reserve(n * 3);
+  for (const std::int8_t m : report.mask) {
+    const auto& c = m == 0 ? kAgree : m == 1 ? kBoundary : m == 2 ? kMismatch : kNotChecked;
+    rgb.insert(rgb.end(), c.begin(), c.end());
+  }
+  return rgb;
+}
+
+void print_summary(const ValidateArgs& args, const fs::path& mask,
+                   const raster::ValidationReport& report) {
+  fmt::print("validated {} against {} ({}x{})\n", args.image, args.scene, report.width,
+             report.height);
+  fmt::print("pixels checked: {} ({} background)\n", report.pixels_checked, report.background);
+  for (std::size_t i = 0; i < report.lights.size(); ++i) {
+    const raster::LightReport& l = report.lights[i];
+    fmt::print(
+        "light {}: {} compared, {} boundary, {} mismatches "
+        "({} false lit, {} false shadowed, {} range)\n",
+        i, l.compared, l.boundary, l.mismatches, l.false_lit, l.false_shadowed, l.wrong_range);
+  }
+  const std::uint64_t total = report.total_mismatches();
+  fmt::print("{}: {} mismatches; mask written to {}\n", total == 0 ? "OK" : "FAILED", total,
+             mask.string());
+}
+
+}  // namespace
+
+CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
+  CLI::App* cmd =
+      app.add_subcommand("validate", "Check a render's shadows against the exact oracle");
+  cmd->add_option("SCENE", args.scene, "Scene file the image was rendered from")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--image", args.image, "EXR written by `umbra render -o NAME.exr`")
+      ->required()
+      ->check(CLI::ExistingFile)
+      ->type_name("RENDER.exr");
+  cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed (default: all)")
+      ->check(positive_integer())
+      ->type_name("N");
+  cmd->add_option("--seed", args.seed, "Seed for --samples (default 1)")->type_name("S");
+  cmd->add_flag("--json", args.json, "Print the report as JSON on stdout instead of text");
+  cmd->add_option("--mask", args.mask,
+                  "Mismatch mask PNG (default <image stem>.mismatches.png beside the image): "
+                  "dark grey agree, yellow boundary, red mismatch, black not checked")
+      ->type_name("MASK.png");
+  cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
+      ->check(thread_count())
+      ->type_name("N");
+  cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
+  cmd->footer(
+      "Example:\n"
+      "  umbra render data/scenes/default.json -o out/default.exr\n"
+      "  umbra validate data/scenes/default.json --image out/default.exr --samples 20000\n"
+      "Exit code 1 when any non-boundary sample disagrees with the oracle.");
+  return cmd;
+}
+
+int run_validate(const ValidateArgs& args) {
+  const fs::path image = args.image;
+  const fs::path mask = args.mask.empty()
+                            ? image.parent_path() / (image.stem().string() + ".mismatches.png")
+                            : fs::path(args.mask);
+  check_output_path(mask, {".png"});
+
+  const geometry::Scene scene = geometry::load_scene(args.scene);
+  const raster::ShadowChannels channels = raster::read_shadow_channels(image);
+  raster::ValidateOptions options;
+  if (args.samples > 0) options.samples = args.samples;
+  options.seed = args.seed;
+  options.threads = args.threads;
+  const raster::ValidationReport report = raster::validate_render(scene, channels, options);
+
+  raster::write_rgb_png(mask, report.width, report.height, mask_colours(report));
+
+  if (args.json) {
+    ValidateRun run;
+    run.scene = args.scene;
+    run.image = args.image;
+    run.mask = mask.string();
+    run.samples = args.samples;
+    run.seed = args.seed;
+    emit_json(validation_json(run, report), "-");
+  } else if (!args.quiet) {
+    print_summary(args, mask, report);
+  }
+  return report.total_mismatches() > 0 ? kExitMismatches : kExitSuccess;
+}
+
+}  // namespace umbra::cli

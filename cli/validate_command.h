@@ -1,0 +1,30 @@
+#pragma once
+// `umbra validate SCENE --image RENDER.exr [--samples N] [--seed S] [--json]
+//                       [--mask MASK.png] [--threads N] [--quiet]`
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+
+namespace umbra::cli {
+
+struct ValidateArgs {
+  std::string scene;
+  std::string image;
+  std::uint64_t samples = 0;  ///< 0: every pixel
+  std::uint64_t seed = 1;
+  bool json = false;
+  std::string mask;  ///< empty: <image stem>.mismatches.png beside the image
+  unsigned threads = 0;
+  bool quiet = false;
+};
+
+/// Adds the `validate` subcommand to `app`, parsing into `args`.
+CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args);
+
+/// Compares the render's shadow.<i> channels with the exact oracle, writes the
+/// mismatch mask and prints the summary. Returns kExitMismatches when any
+/// non-boundary sample disagrees, else kExitSuccess; throws
+/// geometry::InputError on bad input (before any output file is written).
+int run_validate(const ValidateArgs& args);
+
+}  // namespace umbra::cli

@@ -1,0 +1,253 @@
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <geometry/input_error.h>
+#include <raster/image_io.h>
+#include <raster/shading.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace umbra::raster {
+
+using geometry::InputError;
+namespace fs = std::filesystem;
+
+namespace {
+
+enum class ImageKind { png, exr };
+
+std::string lowercase(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+ImageKind kind_of(const fs::path& path) {
+  const std::string ext = lowercase(path.extension().string());
+  if (ext == ".png") return ImageKind::png;
+  if (ext == ".exr") return ImageKind::exr;
+  throw InputError(path.string(), fmt::format("unknown image extension '{}'; use .png or .exr",
+                                              path.extension().string()));
+}
+
+/// Maps a value in [0, 1] to 0..255 by rounding to nearest; out-of-range
+/// values clamp and NaN maps to 0, so a bad pixel never becomes undefined
+/// behaviour in the conversion.
+std::uint8_t quantize(float v) {
+  if (!(v > 0.0f)) return 0;
+  if (v >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(std::lround(v * 255.0f));
+}
+
+/// `.NAME.tmp-XXXXXXXX.ext` beside `target`: same directory (so the rename
+/// is atomic on one file system) and same extension (so OpenImageIO picks
+/// the same format). Hidden, so a directory listing during a long write does
+/// not show it as a result.
+fs::path temporary_beside(const fs::path& target) {
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  const std::string name =
+      fmt::format(".{}.tmp-{:016x}{}", target.stem().string(), rng(), target.extension().string());
+  return target.parent_path() / name;
+}
+
+/// Records the first failure: OpenImageIO's text, or a placeholder when it
+/// gave none.
+void note_failure(bool ok, std::string& error, const std::string& what) {
+  if (!ok && error.empty()) error = what.empty() ? "unknown OpenImageIO error" : what;
+}
+
+/// Writes one image of `spec` from `pixels` (interleaved, of spec.format) to
+/// a temporary file beside `path`, then renames it onto `path`. On any
+/// failure the temporary file is removed and an InputError names `path`.
+void write_atomically(const fs::path& path, const OIIO::ImageSpec& spec, const void* pixels) {
+  const fs::path tmp = temporary_beside(path);
+  std::string error;
+  {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) {
+      const std::string why = OIIO::geterror();
+      note_failure(false, error, why.empty() ? "no OpenImageIO writer for this format" : why);
+    } else {
+      bool ok = out->open(tmp.string(), spec);
+      if (ok) ok = out->write_image(spec.format, pixels);
+      // close() also flushes; its failure (disk full) counts as a failure.
+      const bool closed = out->close();
+      note_failure(ok && closed, error, out->geterror());
+    }
+  }  // the writer is destroyed here, releasing the file before rename/remove
+  if (error.empty()) {
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) error = fmt::format("cannot move the written image into place: {}", ec.message());
+  }
+  if (!error.empty()) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    // OpenImageIO's messages may name the temporary file and span lines;
+    // the CLI prints one line, so keep the first.
+    error = error.substr(0, error.find('\n'));
+    throw InputError(path.string(), "cannot write image: " + error);
+  }
+}
+
+void write_beauty_png(const Frame& frame, const fs::path& path) {
+  const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
+  std::vector<std::uint8_t> bytes(n * 3);
+  for (std::size_t k = 0; k < n * 3; ++k) bytes[k] = quantize(encode_srgb(frame.beauty[k]));
+  OIIO::ImageSpec spec(frame.width, frame.height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  write_atomically(path, spec, bytes.data());
+}
+
+void write_exr(const Frame& frame, const fs::path& path) {
+  const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
+  const std::size_t lights = frame.lights();
+  const std::size_t channels = 3 + 2 * lights + 1;
+
+  OIIO::ImageSpec spec(frame.width, frame.height, static_cast<int>(channels),
+                       OIIO::TypeDesc::FLOAT);
+  // Our order; OpenEXR itself stores channels sorted by name, which is why
+  // read_shadow_channels looks them up by name.
+  std::vector<std::string> names = {"R", "G", "B"};
+  for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("shadow.{}", i));
+  for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("count.{}", i));
+  names.push_back("depth");
+  spec.channelnames = names;
+  spec.alpha_channel = -1;
+  spec.z_channel = -1;
+  spec.attribute("oiio:ColorSpace", "Linear");
+  spec.attribute("compression", "zip");
+
+  std::vector<float> pixels(n * channels);
+  for (std::size_t p = 0; p < n; ++p) {
+    float* px = &pixels[p * channels];
+    px[0] = frame.beauty[p * 3 + 0];
+    px[1] = frame.beauty[p * 3 + 1];
+    px[2] = frame.beauty[p * 3 + 2];
+    for (std::size_t i = 0; i < lights; ++i) {
+      px[3 + i] = frame.shadow[i][p];
+      px[3 + lights + i] = frame.count[i][p];
+    }
+    px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
+  }
+  write_atomically(path, spec, pixels.data());
+}
+
+/// Buffer sizes that do not match width x height are a bug in the caller,
+/// not bad input: std::invalid_argument, which the CLI reports as internal.
+void check_frame(const Frame& frame) {
+  if (frame.width <= 0 || frame.height <= 0)
+    throw std::invalid_argument(
+        fmt::format("write_frame: empty frame {}x{}", frame.width, frame.height));
+  const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
+  bool ok = frame.beauty.size() == n * 3 && frame.depth.size() == n &&
+            frame.count.size() == frame.shadow.size();
+  for (const auto& s : frame.shadow) ok = ok && s.size() == n;
+  for (const auto& c : frame.count) ok = ok && c.size() == n;
+  if (!ok)
+    throw std::invalid_argument(fmt::format(
+        "write_frame: buffer sizes do not match {}x{} with {} lights ({} beauty floats, "
+        "{} depth, {} count channels)",
+        frame.width, frame.height, frame.shadow.size(), frame.beauty.size(), frame.depth.size(),
+        frame.count.size()));
+}
+
+/// The light index of a channel named exactly `shadow.<i>` (i written without
+/// leading zeros), or -1.
+long shadow_index(const std::string& name) {
+  constexpr std::string_view prefix = "shadow.";
+  if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return -1;
+  const char* first = name.data() + prefix.size();
+  const char* last = name.data() + name.size();
+  long index = -1;
+  const auto [end, ec] = std::from_chars(first, last, index);
+  if (ec != std::errc() || end != last || index < 0) return -1;
+  if (std::to_string(index) != std::string(first, last)) return -1;  // "shadow.01"
+  return index;
+}
+
+}  // namespace
+
+void write_frame(const Frame& frame, const fs::path& path) {
+  const ImageKind kind = kind_of(path);
+  check_frame(frame);
+  if (kind == ImageKind::png)
+    write_beauty_png(frame, path);
+  else
+    write_exr(frame, path);
+}
+
+ShadowChannels read_shadow_channels(const fs::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) {
+    std::string error = OIIO::geterror();
+    error = error.substr(0, error.find('\n'));
+    throw InputError(path.string(), "cannot read image: " +
+                                        (error.empty() ? std::string("unknown error") : error));
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+
+  // Channel position by light index; std::map keeps indices sorted whatever
+  // order the file lists them in (EXR sorts "shadow.10" before "shadow.2").
+  std::map<long, int> by_light;
+  for (int c = 0; c < spec.nchannels; ++c) {
+    const long index = shadow_index(spec.channelnames[c]);
+    if (index >= 0) by_light.emplace(index, c);
+  }
+  if (!by_light.contains(0))
+    throw InputError(path.string(),
+                     "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
+  long expected = 0;
+  for (const auto& [index, channel] : by_light) {
+    if (index != expected)
+      throw InputError(path.string(),
+                       fmt::format("has shadow.{} but no shadow.{}", index, expected));
+    ++expected;
+  }
+
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
+    throw InputError(path.string(), fmt::format("unexpected image size {}x{}x{}", spec.width,
+                                                spec.height, spec.depth));
+  const std::size_t n = static_cast<std::size_t>(spec.width) * spec.height;
+  const std::size_t nch = static_cast<std::size_t>(spec.nchannels);
+  std::vector<float> pixels(n * nch);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+    std::string error = in->geterror();
+    error = error.substr(0, error.find('\n'));
+    throw InputError(path.string(), "cannot read image: " + error);
+  }
+
+  ShadowChannels result;
+  result.width = spec.width;
+  result.height = spec.height;
+  result.shadow.reserve(by_light.size());
+  for (const auto& [index, channel] : by_light) {
+    std::vector<float> plane(n);
+    for (std::size_t p = 0; p < n; ++p) plane[p] = pixels[p * nch + channel];
+    result.shadow.push_back(std::move(plane));
+  }
+  return result;
+}
+
+void write_rgb_png(const fs::path& path, int width, int height, const std::vector<float>& rgb) {
+  if (kind_of(path) != ImageKind::png)
+    throw InputError(path.string(), fmt::format("unknown image extension '{}'; use .png",
+                                                path.extension().string()));
+  if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * height * 3)
+    throw std::invalid_argument(
+        fmt::format("write_rgb_png: {} floats for a {}x{} image", rgb.size(), width, height));
+  std::vector<std::uint8_t> bytes(rgb.size());
+  std::transform(rgb.begin(), rgb.end(), bytes.begin(), quantize);
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  write_atomically(path, spec, bytes.data());
+}
+
+}  // namespace umbra::raster

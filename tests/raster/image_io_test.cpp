@@ -1,0 +1,250 @@
+#include <OpenImageIO/imageio.h>
+#include <geometry/input_error.h>
+#include <gtest/gtest.h>
+#include <raster/image_io.h>
+#include <raster/shading.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace umbra::raster {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh directory per test, removed afterwards.
+class ImageIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / (std::string("umbra-image-io-") + info->name() + "-" +
+                                        std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Every entry of the directory, hidden temporaries included.
+  std::vector<fs::path> listing() const {
+    std::vector<fs::path> entries;
+    for (const auto& e : fs::directory_iterator(dir_)) entries.push_back(e.path());
+    return entries;
+  }
+
+  fs::path dir_;
+};
+
+/// A frame whose every value is distinct and not a round number, so a
+/// swapped channel or a lossy conversion shows.
+Frame patterned_frame(int width, int height, std::size_t lights) {
+  Frame frame(width, height, lights);
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  for (std::size_t k = 0; k < n * 3; ++k) frame.beauty[k] = 0.001f * static_cast<float>(k) + 0.1f;
+  for (std::size_t i = 0; i < lights; ++i) {
+    for (std::size_t p = 0; p < n; ++p) {
+      const float values[3] = {kShadowLit, kShadowShadowed, kShadowOutOfRange};
+      frame.shadow[i][p] = values[(p + i) % 3];
+      frame.count[i][p] = static_cast<float>(static_cast<int>(i) - static_cast<int>(p % 4));
+    }
+  }
+  for (std::size_t p = 0; p < n; ++p) frame.depth[p] = p % 5 == 0 ? kDepthBackground : 1.25f * p;
+  return frame;
+}
+
+TEST_F(ImageIoTest, ExrRoundTripWithTwelveLightsKeepsChannelsByName) {
+  // Twelve lights: EXR sorts "shadow.10" and "shadow.11" before "shadow.2".
+  const Frame frame = patterned_frame(7, 5, 12);
+  const fs::path path = dir_ / "frame.exr";
+  write_frame(frame, path);
+
+  const ShadowChannels read = read_shadow_channels(path);
+  EXPECT_EQ(read.width, 7);
+  EXPECT_EQ(read.height, 5);
+  ASSERT_EQ(read.shadow.size(), 12u);
+  for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(read.shadow[i], frame.shadow[i]) << "light " << i;
+
+  // The other channels, exactly, found by name with OpenImageIO.
+  auto in = OIIO::ImageInput::open(path.string());
+  ASSERT_TRUE(in) << OIIO::geterror();
+  const OIIO::ImageSpec& spec = in->spec();
+  ASSERT_EQ(spec.nchannels, 3 + 2 * 12 + 1);
+  std::vector<float> pixels(static_cast<std::size_t>(spec.image_pixels()) * spec.nchannels);
+  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+  const auto channel = [&](const std::string& name) {
+    const int c = spec.channelindex(name);
+    EXPECT_GE(c, 0) << name;
+    std::vector<float> plane;
+    for (std::size_t p = 0; p < 35; ++p) plane.push_back(pixels[p * spec.nchannels + c]);
+    return plane;
+  };
+  const auto r = channel("R"), g = channel("G"), b = channel("B");
+  for (std::size_t p = 0; p < 35; ++p) {
+    EXPECT_EQ(r[p], frame.beauty[3 * p + 0]);
+    EXPECT_EQ(g[p], frame.beauty[3 * p + 1]);
+    EXPECT_EQ(b[p], frame.beauty[3 * p + 2]);
+  }
+  for (std::size_t i = 0; i < 12; ++i)
+    EXPECT_EQ(channel("count." + std::to_string(i)), frame.count[i]);
+  const auto depth = channel("depth");
+  EXPECT_EQ(depth, frame.depth);
+  EXPECT_TRUE(std::isinf(depth[0]) && depth[0] > 0);  // background depth stays +inf
+
+  EXPECT_EQ(listing().size(), 1u);  // no temporary left beside it
+}
+
+TEST_F(ImageIoTest, PngIsSrgbEncodedBytesAtTheRightSize) {
+  Frame frame(4, 3, 1);
+  const auto set = [&](int i, int j, float r, float g, float b) {
+    const std::size_t p = frame.pixel(i, j);
+    frame.beauty[3 * p] = r;
+    frame.beauty[3 * p + 1] = g;
+    frame.beauty[3 * p + 2] = b;
+  };
+  set(0, 0, 0.0f, 1.0f, 0.2140f);             // black, white, mid grey (sRGB 0.5)
+  set(3, 2, 2.0f, -1.0f, 0.5f);               // clamped above and below
+  const fs::path path = dir_ / "beauty.PNG";  // extension case does not matter
+  write_frame(frame, path);
+
+  auto in = OIIO::ImageInput::open(path.string());
+  ASSERT_TRUE(in) << OIIO::geterror();
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(spec.width, 4);
+  EXPECT_EQ(spec.height, 3);
+  ASSERT_EQ(spec.nchannels, 3);
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::UINT8);
+  std::vector<std::uint8_t> bytes(4 * 3 * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data()));
+  const auto at = [&](int i, int j, int c) {
+    return bytes[(static_cast<std::size_t>(j) * 4 + i) * 3 + c];
+  };
+  EXPECT_EQ(at(0, 0, 0), 0);
+  EXPECT_EQ(at(0, 0, 1), 255);
+  EXPECT_EQ(at(0, 0, 2), 127);  // 1.055 * 0.214^(1/2.4) - 0.055 = 0.49997 -> 127.49
+  EXPECT_EQ(at(3, 2, 0), 255);
+  EXPECT_EQ(at(3, 2, 1), 0);
+  EXPECT_EQ(at(3, 2, 2), std::lround(encode_srgb(0.5f) * 255.0f));
+  EXPECT_EQ(at(3, 2, 2), 188);
+  EXPECT_EQ(at(1, 1, 0), 0);  // untouched pixels are black
+  EXPECT_EQ(listing().size(), 1u);
+}
+
+TEST_F(ImageIoTest, RgbPngIsWrittenWithoutGamma) {
+  const std::vector<float> rgb = {0.15f, 0.15f, 0.15f, 1, 1, 0, 1, 0, 0, 0, 0, 0};
+  const fs::path path = dir_ / "mask.png";
+  write_rgb_png(path, 2, 2, rgb);
+  auto in = OIIO::ImageInput::open(path.string());
+  ASSERT_TRUE(in) << OIIO::geterror();
+  EXPECT_EQ(in->spec().width, 2);
+  EXPECT_EQ(in->spec().height, 2);
+  std::vector<std::uint8_t> bytes(12);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data()));
+  EXPECT_EQ(bytes, (std::vector<std::uint8_t>{38, 38, 38, 255, 255, 0, 255, 0, 0, 0, 0, 0}));
+}
+
+TEST_F(ImageIoTest, UnknownExtensionThrowsAndLeavesNoFile) {
+  const Frame frame = patterned_frame(2, 2, 1);
+  for (const char* name : {"frame.bmp", "frame", "frame.png.txt"}) {
+    const fs::path path = dir_ / name;
+    try {
+      write_frame(frame, path);
+      ADD_FAILURE() << "no exception for " << name;
+    } catch (const geometry::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("use .png or .exr"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(write_rgb_png(dir_ / "mask.exr", 1, 1, {0, 0, 0}), geometry::InputError);
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(ImageIoTest, WritingIntoAMissingDirectoryThrowsAndLeavesNoFile) {
+  const Frame frame = patterned_frame(2, 2, 2);
+  const fs::path missing = dir_ / "no-such-dir";
+  for (const char* name : {"frame.png", "frame.exr"}) {
+    const fs::path path = missing / name;
+    try {
+      write_frame(frame, path);
+      ADD_FAILURE() << "no exception for " << name;
+    } catch (const geometry::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(write_rgb_png(missing / "mask.png", 1, 1, {0, 0, 0}), geometry::InputError);
+  EXPECT_FALSE(fs::exists(missing));
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(ImageIoTest, TargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
+  // The target is a directory: the write succeeds into the temporary, the
+  // rename fails, and neither the temporary nor a changed target remains.
+  const fs::path path = dir_ / "taken.exr";
+  fs::create_directory(path);
+  EXPECT_THROW(write_frame(patterned_frame(2, 2, 1), path), geometry::InputError);
+  EXPECT_TRUE(fs::is_directory(path));
+  EXPECT_EQ(listing().size(), 1u);
+}
+
+TEST_F(ImageIoTest, RewritingReplacesTheFileWhole) {
+  const fs::path path = dir_ / "frame.exr";
+  write_frame(patterned_frame(4, 4, 3), path);
+  write_frame(patterned_frame(2, 3, 1), path);
+  const ShadowChannels read = read_shadow_channels(path);
+  EXPECT_EQ(read.width, 2);
+  EXPECT_EQ(read.height, 3);
+  EXPECT_EQ(read.shadow.size(), 1u);
+  EXPECT_EQ(listing().size(), 1u);
+}
+
+TEST_F(ImageIoTest, ReadingAFileWithoutShadowZeroThrows) {
+  Frame frame(3, 2, 0);  // no lights: R, G, B, depth only
+  const fs::path exr = dir_ / "nolights.exr";
+  write_frame(frame, exr);
+  EXPECT_THROW(read_shadow_channels(exr), geometry::InputError);
+
+  const fs::path png = dir_ / "beauty.png";
+  write_frame(patterned_frame(3, 2, 1), png);
+  try {
+    read_shadow_channels(png);
+    ADD_FAILURE() << "no exception for a PNG";
+  } catch (const geometry::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("shadow.0"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ImageIoTest, ReadingAMissingOrCorruptFileThrows) {
+  EXPECT_THROW(read_shadow_channels(dir_ / "absent.exr"), geometry::InputError);
+  const fs::path garbage = dir_ / "garbage.exr";
+  {
+    std::FILE* f = std::fopen(garbage.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fputs("not an image", f);
+    std::fclose(f);
+  }
+  EXPECT_THROW(read_shadow_channels(garbage), geometry::InputError);
+}
+
+TEST_F(ImageIoTest, AGapInTheShadowChannelsThrows) {
+  // shadow.0 and shadow.2 without shadow.1, written directly with OIIO.
+  const fs::path path = dir_ / "gap.exr";
+  OIIO::ImageSpec spec(2, 1, 2, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"shadow.0", "shadow.2"};
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(path.string(), spec));
+  const float pixels[4] = {1, 0, 0.5f, 1};
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels));
+  ASSERT_TRUE(out->close());
+  out.reset();
+  try {
+    read_shadow_channels(path);
+    ADD_FAILURE() << "no exception for a gap";
+  } catch (const geometry::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no shadow.1"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace umbra::raster
