@@ -27,7 +27,8 @@ struct Frame {
 
   Frame() = default;
   Frame(int w, int h, std::size_t lights)
-      : width(w), height(h),
+      : width(w),
+        height(h),
         beauty(static_cast<std::size_t>(w) * h * 3, 0.0f),
         shadow(lights, std::vector<float>(static_cast<std::size_t>(w) * h, kShadowLit)),
         count(lights, std::vector<float>(static_cast<std::size_t>(w) * h, 0.0f)),

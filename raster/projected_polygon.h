@@ -36,10 +36,10 @@ struct CameraSpace {
     return {dot(d, frame.r), dot(d, frame.u), dot(d, frame.f)};
   }
   /// Screen y of row j's pixel centres, exactly as sample_ray computes sy.
-  double row_screen_y(int j) const {
-    return (1.0 - 2.0 * (j + 0.5) / frame.height) * frame.h;
+  double row_screen_y(int j) const { return (1.0 - 2.0 * (j + 0.5) / frame.height) * frame.h; }
+  double pixel_x(double screen_x) const {
+    return (screen_x / (frame.a * frame.h) + 1.0) * frame.width / 2.0;
   }
-  double pixel_x(double screen_x) const { return (screen_x / (frame.a * frame.h) + 1.0) * frame.width / 2.0; }
   double pixel_y(double screen_y) const { return (1.0 - screen_y / frame.h) * frame.height / 2.0; }
 };
 
@@ -58,8 +58,8 @@ struct ProjectedEdge {
   /// mag · (|Pa| + |Pb|) (see ProjectedPolygon::mag).
   double m_scale = 0;
   double xa = 0, ya = 0, xb = 0, yb = 0;  ///< pixel coordinates of the clipped endpoints
-  double err_a = 0, err_b = 0;            ///< bounds on the endpoints' pixel-coordinate rounding error
-  std::uint32_t polygon = 0;              ///< index into the prepared polygons
+  double err_a = 0, err_b = 0;  ///< bounds on the endpoints' pixel-coordinate rounding error
+  std::uint32_t polygon = 0;    ///< index into the prepared polygons
 };
 
 struct ProjectedPolygon {
@@ -75,7 +75,8 @@ struct ProjectedPolygon {
   RasterPolygon::Kind kind = RasterPolygon::Kind::surface;
   std::int32_t id = 0;
   std::uint32_t light = 0;
-  std::int32_t weight = 0;  ///< shadow: +nb_c if the eye sees the vertices counter-clockwise, else −nb_c
+  std::int32_t weight =
+      0;  ///< shadow: +nb_c if the eye sees the vertices counter-clockwise, else −nb_c
 
   // Plane in camera space: dot(n, X) = n_dot_p0 for X on the plane.
   Vec3 n;
@@ -89,7 +90,8 @@ struct ProjectedPolygon {
   double mag = 0;
   int vertex_count = 0;
 
-  double bbox_x0 = 0, bbox_y0 = 0, bbox_x1 = 0, bbox_y1 = 0;  ///< pixel bounding box of the clipped projection
+  double bbox_x0 = 0, bbox_y0 = 0, bbox_x1 = 0,
+         bbox_y1 = 0;  ///< pixel bounding box of the clipped projection
   std::vector<ProjectedEdge> edges;
 
   /// Ray parameter t at which eye + t·d meets the polygon's plane (d in camera space).

@@ -11,9 +11,8 @@
 //      is visible, each shadow polygon before it adds its signed Nb_C.
 // Then, per scanline, every pixel that a floating-point decision could have
 // got wrong is flagged `uncertain`; the bounds are stated where they are used.
-#include <raster/scanline.h>
-
 #include <raster/projected_polygon.h>
+#include <raster/scanline.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +54,8 @@ struct TableEdge {
   ProjectedEdge edge;
   RowRange scan;
   RowRange near;
-  double near_margin = 0;  ///< half-width (pixels) of the strip round the edge examined for uncertainty
+  double near_margin =
+      0;  ///< half-width (pixels) of the strip round the edge examined for uncertainty
 };
 
 /// Everything the bands share, read-only once built.
@@ -64,7 +64,8 @@ struct Scene {
   std::vector<ProjectedPolygon> polygons;
   std::vector<TableEdge> edges;
   std::vector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
-  std::vector<std::size_t> scan_bucket;    ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
+  std::vector<std::size_t>
+      scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
   std::vector<std::uint32_t> by_near_row;
   std::vector<std::size_t> near_bucket;
   std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
@@ -80,7 +81,8 @@ void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range
   order.assign(bucket[height], 0);
   std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
   for (std::uint32_t k = 0; k < edges.size(); ++k)
-    if ((edges[k].*range).first <= (edges[k].*range).last) order[fill[(edges[k].*range).first]++] = k;
+    if ((edges[k].*range).first <= (edges[k].*range).last)
+      order[fill[(edges[k].*range).first]++] = k;
 }
 
 Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
@@ -154,8 +156,10 @@ bool before(const DepthEntry& a, const DepthEntry& b) {
 class Band {
  public:
   Band(const Scene& scene, ScanlineResult& result)
-      : scene_(scene), result_(result),
-        inside_(scene.polygons.size(), 0), slot_(scene.polygons.size(), 0) {}
+      : scene_(scene),
+        result_(result),
+        inside_(scene.polygons.size(), 0),
+        slot_(scene.polygons.size(), 0) {}
 
   void run(int row0, int row1) {
     const int width = scene_.camera.frame.width;
@@ -177,7 +181,8 @@ class Band {
         for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
           near_edges_.push_back(scene_.by_near_row[k]);
       }
-      std::erase_if(crossings_, [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
+      std::erase_if(crossings_,
+                    [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
       std::erase_if(near_edges_, [&](std::uint32_t e) { return scene_.edges[e].near.last < j; });
       scan_row(j);
     }
@@ -405,7 +410,7 @@ class Band {
 
   const Scene& scene_;
   ScanlineResult& result_;
-  std::vector<Crossing> crossings_;       // the active edge list, x-sorted
+  std::vector<Crossing> crossings_;        // the active edge list, x-sorted
   std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
   std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
   std::vector<std::uint32_t> slot_;        // per polygon: its place in active_
@@ -437,7 +442,8 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   result.uncertain.assign(pixels, 0);
 
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  const int bands = static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
+  const int bands =
+      static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
   // Each row is computed from the shared read-only scene alone, so the split
   // into bands cannot change any value: results are identical for any count.
   const auto run_band = [&](int b) {

@@ -30,7 +30,8 @@ struct ScanlineResult {
   std::size_t lights = 0;
   std::vector<std::int32_t> visible;  ///< surface id per pixel; -1 where the ray hits nothing
   std::vector<double> depth;          ///< ray parameter t of the visible hit (infinity if none)
-  std::vector<std::int32_t> count;    ///< [pixel * lights + light]: summed weights in front of the hit
+  std::vector<std::int32_t>
+      count;  ///< [pixel * lights + light]: summed weights in front of the hit
   std::vector<std::uint8_t> uncertain;
 };
 
