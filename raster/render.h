@@ -20,6 +20,10 @@ struct RenderStats {
   std::uint64_t shadow_polygons = 0;
   std::uint64_t exact_fallback_pixels = 0;
   std::uint64_t pixels = 0;
+  /// How the models' edges are shared (geometry::edge_topology), summed.
+  std::uint64_t boundary_edges = 0;
+  std::uint64_t non_manifold_edges = 0;
+  std::uint64_t degenerate_polygons = 0;
 };
 
 Frame render(const geometry::Scene& scene, const RenderOptions& options,

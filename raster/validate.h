@@ -17,9 +17,9 @@ struct ValidateOptions {
 };
 
 struct LightReport {
-  std::uint64_t compared = 0;   ///< samples with a visible surface
-  std::uint64_t boundary = 0;   ///< of those, on a boundary (not scored)
-  std::uint64_t mismatches = 0; ///< non-boundary samples whose class differs
+  std::uint64_t compared = 0;    ///< samples with a visible surface
+  std::uint64_t boundary = 0;    ///< of those, on a boundary (not scored)
+  std::uint64_t mismatches = 0;  ///< non-boundary samples whose class differs
   std::uint64_t false_lit = 0;
   std::uint64_t false_shadowed = 0;
   std::uint64_t wrong_range = 0;  ///< in range vs out of range disagree

@@ -1,0 +1,21 @@
+#pragma once
+// The render methods behind raster::render (render.h), one file each.
+#include <geometry/scene_index.h>
+#include <raster/frame.h>
+#include <raster/render.h>
+
+namespace umbra::raster {
+
+/// The oracle's own answer at every pixel: exact first hit, exact class.
+/// count.<i> is 1 where shadowed, 0 elsewhere.
+Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& options,
+                   RenderStats& stats);
+
+/// Shadow volumes from contour edges through the scanline depth count, with
+/// every pixel the scanline cannot decide in floating point decided again
+/// exactly (visible_surface.h, volume_crossings.h, and the oracle where even
+/// the exact volume count meets a degenerate configuration).
+Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& options,
+                    RenderStats& stats);
+
+}  // namespace umbra::raster

@@ -1,0 +1,144 @@
+// Method::volume: Crow's shadow volumes from contour edges, Bergeron's Nb_C,
+// counted by the scanline renderer; what floating point cannot decide is
+// decided again exactly, so every pixel agrees with the oracle off boundaries.
+#include <geometry/exact_predicates.h>
+#include <geometry/shadow_oracle.h>
+#include <geometry/volume_builder.h>
+#include <geometry/volume_crossings.h>
+#include <raster/parallel_rows.h>
+#include <raster/pixel_sample.h>
+#include <raster/render_methods.h>
+#include <raster/scanline.h>
+#include <raster/surface_table.h>
+
+#include <atomic>
+#include <chrono>
+
+namespace umbra::raster {
+
+using geometry::ShadowClass;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The shadow polygons enter the scanline's sorts beside the surfaces.
+void append_shadow_polygons(const geometry::ShadowVolumes& volumes,
+                            std::vector<RasterPolygon>& polygons) {
+  for (std::uint32_t k = 0; k < volumes.polygons.size(); ++k) {
+    const geometry::ShadowPolygon& s = volumes.polygons[k];
+    RasterPolygon raster;
+    raster.vertices = s.vertices;
+    raster.kind = RasterPolygon::Kind::shadow;
+    raster.id = k;
+    raster.light = s.light;
+    raster.nb_c = s.nb_c;
+    polygons.push_back(std::move(raster));
+  }
+}
+
+/// Out of range decided exactly on the plane of the visible triangle:
+/// |H - L| > light_end (DESIGN.md; equality is a boundary, taken as in range).
+bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
+                  const geometry::HitTriangle& tri) {
+  if (light.type != geometry::LightType::point || !light.light_end) return false;
+  return geometry::compare_hit_distance(ray.origin, ray.direction, tri.a, tri.b, tri.c,
+                                        light.position,
+                                        *light.light_end) == geometry::Sign::positive;
+}
+
+ShadowClass class_of_count(int count) {
+  return count == 0 ? ShadowClass::lit : ShadowClass::shadowed;
+}
+
+}  // namespace
+
+Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& options,
+                    RenderStats& stats) {
+  const geometry::Scene& scene = index.scene();
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const std::size_t lights = scene.lights.size();
+
+  auto start = Clock::now();
+  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene);
+  for (const geometry::VolumeStats& v : volumes.stats) stats.contour_edges += v.contour_edges;
+  stats.shadow_polygons = volumes.polygons.size();
+  stats.seconds_volumes = seconds_since(start);
+
+  start = Clock::now();
+  SurfaceTable table = surface_table(index);
+  append_shadow_polygons(volumes, table.polygons);
+  const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads);
+  stats.seconds_raster = seconds_since(start);
+
+  start = Clock::now();
+  const geometry::VolumeCrossings crossings(scene, volumes);
+  Frame frame(camera.width, camera.height, lights);
+  std::atomic<std::uint64_t> fallbacks{0};
+  parallel_rows(camera.height, options.threads, [&](int j) {
+    PixelSample sample;
+    sample.classes.resize(lights);
+    sample.counts.resize(lights);
+    std::uint64_t row_fallbacks = 0;
+    for (int i = 0; i < camera.width; ++i) {
+      const std::size_t pixel = frame.pixel(i, j);
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+      if (!scan.uncertain[pixel]) {
+        const std::int32_t id = scan.visible[pixel];
+        if (id < 0) {
+          store_background(pixel, frame);
+          continue;
+        }
+        const SurfaceEntry& entry = table.entries[static_cast<std::size_t>(id)];
+        const geometry::HitTriangle tri = geometry::hit_triangle(index, entry.hit);
+        sample.t = scan.depth[pixel];
+        sample.normal = entry.normal;
+        sample.color = entry.color;
+        for (std::uint32_t l = 0; l < lights; ++l) {
+          sample.counts[l] = scan.count[pixel * lights + l];
+          sample.classes[l] = out_of_range(scene.lights[l], ray, tri)
+                                  ? ShadowClass::out_of_range
+                                  : class_of_count(sample.counts[l]);
+        }
+        store_sample(scene, ray, sample, pixel, frame);
+        continue;
+      }
+      // Floating point could not decide this pixel: the visible surface and
+      // each light's count again, exactly.
+      ++row_fallbacks;
+      const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
+      if (!hit) {
+        store_background(pixel, frame);
+        continue;
+      }
+      const geometry::HitTriangle tri = set_surface(index, ray, *hit, sample);
+      for (std::uint32_t l = 0; l < lights; ++l) {
+        if (out_of_range(scene.lights[l], ray, tri)) {
+          sample.classes[l] = ShadowClass::out_of_range;
+          sample.counts[l] = 0;
+          continue;
+        }
+        if (const std::optional<int> count = crossings.count(ray, tri, l)) {
+          sample.counts[l] = *count;
+          sample.classes[l] = class_of_count(*count);
+        } else {
+          // The eye segment meets a volume degenerately (through an edge of a
+          // side polygon, in its plane): the oracle decides; count.<i> then
+          // holds 1 for shadowed and 0 for lit.
+          sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;
+          sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+        }
+      }
+      store_sample(scene, ray, sample, pixel, frame);
+    }
+    fallbacks += row_fallbacks;
+  });
+  stats.exact_fallback_pixels = fallbacks;
+  stats.seconds_exact_fallback = seconds_since(start);
+  return frame;
+}
+
+}  // namespace umbra::raster
