@@ -1,0 +1,194 @@
+// raster::render and raster::validate_render on scenes with known answers,
+// and the validator's ability to catch wrong pictures.
+#include <geometry/input_error.h>
+#include <geometry/sample_ray.h>
+#include <geometry/scene_io.h>
+#include <geometry/shadow_oracle.h>
+#include <gtest/gtest.h>
+#include <raster/render.h>
+#include <raster/validate.h>
+
+#include <cmath>
+
+namespace umbra::raster {
+namespace {
+
+using geometry::Vec3;
+
+ShadowChannels channels_of(const Frame& frame) {
+  return ShadowChannels{frame.width, frame.height, frame.shadow};
+}
+
+/// A 4 x 4 floor at y = 0 seen from straight above, a 0.5 x 0.5 square at
+/// y = 2 and a point light at (1, 4, 0): the square's shadow on the floor is
+/// the square scaled by 2 about the light's foot, x in (-1.5, -0.5) and z in
+/// (-0.5, 0.5), clear of the square's own image. All coordinates are dyadic.
+geometry::Scene square_over_floor() {
+  geometry::Scene s;
+  s.camera = {.eye = {0, 8, 0},
+              .look_at = {0, 0, 0},
+              .up = {0, 0, -1},
+              .fov_y_deg = 20,
+              .width = 64,
+              .height = 64};
+  geometry::Light light;
+  light.position = {1, 4, 0};
+  s.lights.push_back(light);
+  geometry::Model floor;
+  floor.vertices = {{-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}};
+  floor.polygons = {{0, 1, 2, 3}};
+  geometry::Model square;
+  square.vertices = {{-0.25, 2, -0.25}, {-0.25, 2, 0.25}, {0.25, 2, 0.25}, {0.25, 2, -0.25}};
+  square.polygons = {{0, 1, 2, 3}};
+  s.models = {floor, square};
+  return s;
+}
+
+TEST(Render, SquareShadowOnFloorHasTheProjectedExtent) {
+  const geometry::Scene scene = square_over_floor();
+  RenderStats stats;
+  const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &stats);
+  ASSERT_EQ(frame.width, 64);
+  ASSERT_EQ(frame.lights(), 1u);
+  // Both quads are open models casting shadows: four boundary edges each,
+  // |Nb_C| = 1 (the floor's volume lies below the floor, out of sight).
+  EXPECT_EQ(stats.contour_edges, 8u);
+  EXPECT_EQ(stats.shadow_polygons, 8u);
+  EXPECT_EQ(stats.boundary_edges, 8u);  // both models are single open quads
+
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  int shadowed = 0, lit = 0;
+  for (int j = 0; j < frame.height; ++j) {
+    for (int i = 0; i < frame.width; ++i) {
+      const std::size_t p = frame.pixel(i, j);
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+      ASSERT_TRUE(std::isfinite(frame.depth[p]));  // the floor fills the view
+      const double t = static_cast<double>(frame.depth[p]) / geometry::length(ray.direction);
+      const Vec3 h = ray.origin + t * ray.direction;
+      // Points seen on the square itself (y = 2) face the light: lit.
+      if (std::fabs(h.y - 2) < 1e-6) {
+        EXPECT_EQ(frame.shadow[0][p], kShadowLit) << i << "," << j;
+        ++lit;
+        continue;
+      }
+      ASSERT_NEAR(h.y, 0, 1e-6);
+      // Projection of the square from (1, 4, 0) onto y = 0.
+      const double margin = std::max(std::fabs(h.x + 1), std::fabs(h.z)) - 0.5;
+      if (std::fabs(margin) < 1e-3) continue;  // a pixel at the shadow's edge
+      const float expected = margin < 0 ? kShadowShadowed : kShadowLit;
+      EXPECT_EQ(frame.shadow[0][p], expected) << i << "," << j;
+      EXPECT_EQ(frame.count[0][p], margin < 0 ? 1.0f : 0.0f) << i << "," << j;
+      (margin < 0 ? shadowed : lit)++;
+    }
+  }
+  EXPECT_GT(shadowed, 0);
+  EXPECT_GT(lit, shadowed);
+}
+
+TEST(Render, ExactAndVolumeMethodsAgreeOffBoundaries) {
+  const geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/two_lights.json");
+  const Frame volume = render(scene, {.method = Method::volume, .threads = 2});
+  const Frame exact = render(scene, {.method = Method::exact, .threads = 2});
+  const ValidationReport a =
+      validate_render(scene, channels_of(volume), {.samples = {}, .seed = 1, .threads = 2});
+  const ValidationReport b =
+      validate_render(scene, channels_of(exact), {.samples = {}, .seed = 1, .threads = 2});
+  EXPECT_EQ(a.total_mismatches(), 0u);
+  EXPECT_EQ(b.total_mismatches(), 0u);
+  ASSERT_EQ(a.lights.size(), 2u);
+  EXPECT_GT(a.lights[0].compared, 10000u);
+  // Both renders see the same surfaces: equal depth everywhere but rounding.
+  for (std::size_t p = 0; p < volume.depth.size(); ++p) {
+    if (std::isinf(exact.depth[p])) {
+      EXPECT_TRUE(std::isinf(volume.depth[p])) << p;
+    } else {
+      EXPECT_NEAR(volume.depth[p], exact.depth[p], 1e-3f * exact.depth[p]) << p;
+    }
+  }
+}
+
+TEST(Render, DegenerateSceneUsesTheExactFallback) {
+  const geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/degenerate.json");
+  RenderStats stats;
+  const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &stats);
+  EXPECT_GT(stats.exact_fallback_pixels, 0u);
+  const ValidationReport report =
+      validate_render(scene, channels_of(frame), {.samples = {}, .seed = 1, .threads = 2});
+  EXPECT_EQ(report.total_mismatches(), 0u);
+  EXPECT_GT(report.lights[0].boundary + report.lights[1].boundary, 1000u);
+}
+
+TEST(Validate, CountsEveryPlantedErrorAndMarksItInTheMask) {
+  const geometry::Scene scene = square_over_floor();
+  const Frame frame = render(scene, {.method = Method::exact, .threads = 2});
+  ShadowChannels wrong = channels_of(frame);
+  // Flip a pixel deep in the shadow (x = -1, z = 0 is seen at about
+  // (9, 32)) and a corner pixel (lit, far from any edge); mark a third as out
+  // of range although the light is unlimited.
+  const std::size_t centre = frame.pixel(9, 32), corner = frame.pixel(1, 1),
+                    other = frame.pixel(62, 2);
+  ASSERT_EQ(wrong.shadow[0][centre], kShadowShadowed);
+  ASSERT_EQ(wrong.shadow[0][corner], kShadowLit);
+  ASSERT_EQ(wrong.shadow[0][other], kShadowLit);
+  wrong.shadow[0][centre] = kShadowLit;
+  wrong.shadow[0][corner] = kShadowShadowed;
+  wrong.shadow[0][other] = kShadowOutOfRange;
+
+  const ValidationReport report =
+      validate_render(scene, wrong, {.samples = {}, .seed = 1, .threads = 2});
+  EXPECT_EQ(report.pixels_checked, 64u * 64u);
+  EXPECT_EQ(report.background, 0u);
+  EXPECT_EQ(report.total_mismatches(), 3u);
+  EXPECT_EQ(report.lights[0].false_lit, 1u);
+  EXPECT_EQ(report.lights[0].false_shadowed, 1u);
+  EXPECT_EQ(report.lights[0].wrong_range, 1u);
+  int marked = 0;
+  for (std::size_t p = 0; p < report.mask.size(); ++p) {
+    if (report.mask[p] == 2) {
+      ++marked;
+      EXPECT_TRUE(p == centre || p == corner || p == other) << p;
+    }
+  }
+  EXPECT_EQ(marked, 3);
+}
+
+TEST(Validate, ValuesThatAreNoClassAreMismatches) {
+  const geometry::Scene scene = square_over_floor();
+  ShadowChannels c = channels_of(render(scene, {.method = Method::exact, .threads = 1}));
+  c.shadow[0][0] = 0.9f;  // near "lit" but not a class value
+  const ValidationReport report =
+      validate_render(scene, c, {.samples = {}, .seed = 1, .threads = 1});
+  EXPECT_EQ(report.total_mismatches(), 1u);
+  EXPECT_EQ(report.lights[0].wrong_range, 1u);
+}
+
+TEST(Validate, SampledRunChecksExactlyNDistinctSeededPixels) {
+  const geometry::Scene scene = square_over_floor();
+  const ShadowChannels c = channels_of(render(scene, {.method = Method::volume, .threads = 2}));
+  const ValidationReport a = validate_render(scene, c, {.samples = 500, .seed = 7, .threads = 2});
+  const ValidationReport b = validate_render(scene, c, {.samples = 500, .seed = 7, .threads = 1});
+  EXPECT_EQ(a.pixels_checked, 500u);
+  int checked = 0;
+  for (const std::int8_t m : a.mask) checked += m >= 0;
+  EXPECT_EQ(checked, 500);
+  EXPECT_EQ(a.mask, b.mask);  // same seed, same pixels, whatever the threads
+  const ValidationReport all =
+      validate_render(scene, c, {.samples = 1u << 20, .seed = 1, .threads = 2});
+  EXPECT_EQ(all.pixels_checked, 64u * 64u);
+}
+
+TEST(Validate, ImageOfTheWrongSizeOrLightCountIsAnInputError) {
+  const geometry::Scene scene = square_over_floor();
+  ShadowChannels c = channels_of(render(scene, {.method = Method::exact, .threads = 1}));
+  ShadowChannels two_lights = c;
+  two_lights.shadow.push_back(c.shadow[0]);
+  EXPECT_THROW(validate_render(scene, two_lights, {}), geometry::InputError);
+  ShadowChannels narrow = c;
+  narrow.width = 32;
+  EXPECT_THROW(validate_render(scene, narrow, {}), geometry::InputError);
+}
+
+}  // namespace
+}  // namespace umbra::raster
