@@ -18,7 +18,7 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["models"] = run.models;
   j["seconds"] = {
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
-      {"raster", stats.seconds_raster}, {"exact_fallback", stats.seconds_exact_fallback},
+      {"raster", stats.seconds_raster}, {"decide", stats.seconds_decide},
       {"render", timings.render},       {"write", timings.write},
       {"total", timings.total},
   };

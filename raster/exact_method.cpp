@@ -38,7 +38,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
     }
   });
 
-  stats.seconds_exact_fallback =
+  stats.seconds_decide =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats.exact_fallback_pixels = static_cast<std::uint64_t>(camera.width) * camera.height;
   return frame;

@@ -15,7 +15,7 @@ struct RenderOptions {
 struct RenderStats {
   double seconds_volumes = 0;
   double seconds_raster = 0;
-  double seconds_exact_fallback = 0;
+  double seconds_decide = 0;
   std::uint64_t contour_edges = 0;
   std::uint64_t shadow_polygons = 0;
   std::uint64_t exact_fallback_pixels = 0;

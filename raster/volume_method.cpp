@@ -137,7 +137,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
     fallbacks += row_fallbacks;
   });
   stats.exact_fallback_pixels = fallbacks;
-  stats.seconds_exact_fallback = seconds_since(start);
+  stats.seconds_decide = seconds_since(start);
   return frame;
 }
 
