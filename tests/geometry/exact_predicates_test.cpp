@@ -3,27 +3,16 @@
 // coordinates). The reference below computes with CGAL::Exact_rational.
 #include <geometry/exact_predicates.h>
 
-#include <CGAL/Exact_rational.h>
 #include <gtest/gtest.h>
+#include <tests/geometry/rational_vec.h>
 
 #include <random>
 
 namespace umbra::geometry {
 namespace {
 
-using Q = CGAL::Exact_rational;
+using namespace test;
 
-struct QV {
-  Q x, y, z;
-};
-QV q(const Vec3& v) { return {Q(v.x), Q(v.y), Q(v.z)}; }
-QV operator-(const QV& a, const QV& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-QV operator+(const QV& a, const QV& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-QV operator*(const Q& s, const QV& a) { return {s * a.x, s * a.y, s * a.z}; }
-Q det(const QV& a, const QV& b, const QV& c) {
-  return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
-}
-Sign sign_of(const Q& v) { return v > 0 ? Sign::positive : (v < 0 ? Sign::negative : Sign::zero); }
 QV slot(const HPoint& p, const QV& base) { return p.finite ? q(p.v) - base : q(p.v); }
 
 Sign reference_orientation(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d) {
