@@ -27,6 +27,8 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"contour_edges", stats.contour_edges},
       {"shadow_polygons", stats.shadow_polygons},
       {"exact_fallback_pixels", stats.exact_fallback_pixels},
+      {"twisted_polygons", stats.twisted_polygons},
+      {"eye_degenerate_lights", stats.eye_degenerate_lights},
       {"boundary_edges", stats.boundary_edges},
       {"non_manifold_edges", stats.non_manifold_edges},
       {"degenerate_polygons", stats.degenerate_polygons},

@@ -1,5 +1,6 @@
 #include <geometry/contour.h>
 #include <geometry/polygon_surface.h>
+#include <geometry/twist.h>
 
 #include <bit>
 #include <unordered_map>
@@ -9,7 +10,9 @@ namespace {
 
 struct PositionHash {
   std::size_t operator()(const Vec3& v) const {
-    const auto h = [](double x) { return std::hash<std::uint64_t>{}(std::bit_cast<std::uint64_t>(x + 0.0)); };
+    const auto h = [](double x) {
+      return std::hash<std::uint64_t>{}(std::bit_cast<std::uint64_t>(x + 0.0));
+    };
     return h(v.x) ^ (h(v.y) * 0x9e3779b97f4a7c15ULL) ^ (h(v.z) * 0xc2b2ae3d27d4eb4fULL);
   }
 };
@@ -48,11 +51,48 @@ Sign polygon_facing(const Model& model, const Polygon& polygon, const HPoint& li
   return fan_orientation(points, light);
 }
 
+std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light) {
+  std::vector<PolygonRole> roles(model.polygons.size());
+  std::vector<Vec3> points;
+  for (std::size_t p = 0; p < model.polygons.size(); ++p) {
+    const Polygon& polygon = model.polygons[p];
+    const PolygonSurface surface = polygon_surface(model.vertices, polygon);
+    if (surface.shape == PolygonShape::degenerate) continue;
+    points.clear();
+    for (std::uint32_t v : polygon) points.push_back(model.vertices[v]);
+    if (surface.shape == PolygonShape::planar) {
+      // The light in the polygon's plane: no volume (DESIGN.md). Asked of a
+      // fan triangle of nonzero area, which spans the plane.
+      const auto& t = surface.triangles.front().local;
+      if (orientation(points[t[0]], HPoint::point(points[t[1]]), HPoint::point(points[t[2]]),
+                      light) == Sign::zero)
+        continue;
+    }
+    if (points.size() >= 4 && l_twisted(points, light)) {
+      roles[p] = {1, true};
+    } else if (surface.shape == PolygonShape::planar) {
+      roles[p].facing = to_int(fan_orientation(points, light));
+    } else {
+      const Sign facing = projected_facing(points, light);
+      if (folds_seen_from(points, light, facing)) {
+        roles[p] = {1, true};  // folded or wrapped: parity, like a twisted polygon
+      } else {
+        roles[p].facing = to_int(facing);
+      }
+    }
+  }
+  return roles;
+}
+
 std::vector<ContourEdge> contour_edges(const Model& model, const HPoint& light) {
+  return contour_edges(model, polygon_roles(model, light));
+}
+
+std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles) {
   const std::vector<std::uint32_t> id = weld(model);
   std::vector<int> facing(model.polygons.size());
   for (std::size_t p = 0; p < model.polygons.size(); ++p)
-    facing[p] = to_int(polygon_facing(model, model.polygons[p], light));
+    facing[p] = roles[p].twisted ? 0 : roles[p].facing;
 
   struct Accumulated {
     ContourEdge edge;  // from/to as first seen; weight along that direction
@@ -89,12 +129,16 @@ EdgeTopology edge_topology(const Model& model) {
   EdgeTopology t;
   t.edges = users.size();
   for (const auto& [k, n] : users) {
-    if (n == 1) ++t.boundary_edges;
-    else if (n == 2) ++t.manifold_edges;
-    else ++t.non_manifold_edges;
+    if (n == 1)
+      ++t.boundary_edges;
+    else if (n == 2)
+      ++t.manifold_edges;
+    else
+      ++t.non_manifold_edges;
   }
   for (const Polygon& p : model.polygons)
-    if (polygon_surface(model.vertices, p).shape == PolygonShape::degenerate) ++t.degenerate_polygons;
+    if (polygon_surface(model.vertices, p).shape == PolygonShape::degenerate)
+      ++t.degenerate_polygons;
   return t;
 }
 

@@ -33,16 +33,41 @@ struct ContourEdge {
   std::uint32_t edge = 0;     ///< the edge's position in that polygon
 };
 
-/// Edges of nonzero weight, in the order their first polygon lists them.
+/// How a polygon takes part in a light's volumes, decided exactly.
+struct PolygonRole {
+  /// +1 / -1: the polygon bounds a volume, running counter-clockwise /
+  /// clockwise seen from the light; 0: it casts no volume (no surface, or
+  /// the light lies in its plane). For a twisted polygon: 1.
+  int facing = 0;
+  /// L-twisted, or non-planar and folded or wrapped (twist.h): it gets its
+  /// own volume, counted by parity, and its edges count as unshared for the
+  /// rest of its model.
+  bool twisted = false;
+};
+
+/// One role per polygon of the model: degenerate polygons and planar ones
+/// whose plane holds the light cast nothing; polygons of four or more
+/// vertices are tested for an L-twist (a planar one is twisted when it
+/// crosses itself); planar polygons that are not take fan_orientation; a
+/// non-planar polygon that is not takes its facing from its projection seen
+/// from the light (projected_facing), unless its surface folds in depth or
+/// wraps around the light (folds_seen_from): then it is handled by parity
+/// like a twisted one. All of it exact (twist.h).
+std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light);
+
+/// Edges of nonzero weight, in the order their first polygon lists them;
+/// polygons with facing 0 and twisted polygons add no weight.
+std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles);
+/// contour_edges(model, polygon_roles(model, light)).
 std::vector<ContourEdge> contour_edges(const Model& model, const HPoint& light);
 
 /// How the model's edges are shared (independent of any light).
 struct EdgeTopology {
-  std::uint64_t edges = 0;               ///< distinct undirected edges of nonzero length
-  std::uint64_t boundary_edges = 0;      ///< used by one polygon
-  std::uint64_t manifold_edges = 0;      ///< used by two
-  std::uint64_t non_manifold_edges = 0;  ///< used by three or more
-  std::uint64_t degenerate_polygons = 0; ///< all vertices on one line
+  std::uint64_t edges = 0;                ///< distinct undirected edges of nonzero length
+  std::uint64_t boundary_edges = 0;       ///< used by one polygon
+  std::uint64_t manifold_edges = 0;       ///< used by two
+  std::uint64_t non_manifold_edges = 0;   ///< used by three or more
+  std::uint64_t degenerate_polygons = 0;  ///< all vertices on one line
 };
 EdgeTopology edge_topology(const Model& model);
 

@@ -4,6 +4,7 @@
 #include <geometry/exact_predicates.h>
 #include <geometry/visible_surface.h>
 
+#include <optional>
 #include <vector>
 
 namespace umbra::geometry {
@@ -31,6 +32,16 @@ struct ShadowAnswer {
 /// shadows P robustly, which no small move undoes.
 ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, const SurfaceHit& hit,
                              std::uint32_t light);
+
+/// The shadow-casting polygons (indices into SceneIndex::polygons()) whose
+/// surfaces the segment from the finite point `x` to light `light` (the ray
+/// from x against a directional light's direction) crosses an odd number of
+/// times, in increasing order; nullopt when the segment touches any casting
+/// polygon (an edge, a vertex, a face's plane), where a small move of x could
+/// change the answer. Range is not considered. The eye's starting counts
+/// and the volume tests ask this of points that are not samples.
+std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& index, const Vec3& x,
+                                                             std::uint32_t light);
 
 /// The homogeneous position of a light: the point, or for a directional
 /// light travelling along D the point at infinity in direction -D.

@@ -24,7 +24,7 @@ enum class ShadowPolygonType : std::uint8_t {
 /// which side the eye ray crosses.
 ///
 /// A side polygon (type 2) of edge (a, b) of a point light L has the
-/// vertices a, b, b', a' with x' = x + k·(x - L) for one k > 0 per volume; its
+/// vertices a, b, b', a' with x' = x + k·(x - L) for one k > 0 per model; its
 /// exact support is the plane through L, a and b, and decisions are taken
 /// on that ideal geometry (a, b, L, k), not on the rounded far vertices.
 /// For a directional light travelling along D, x' = x + k·D.
@@ -37,24 +37,54 @@ struct ShadowPolygon {
   std::uint32_t edge = 0;
   ShadowPolygonType type = ShadowPolygonType::side;
   std::int32_t nb_c = 0;
+  /// A face of an L-twisted polygon's own volume (Bergeron's Fig. 11/12):
+  /// crossing it toggles the In_Shadow flag of the pair (light, polygon)
+  /// instead of adding nb_c; its nb_c is 1.
   bool twisted = false;
+  /// twisted only: index into ShadowVolumes::twisted; -1 otherwise.
+  std::int32_t group = -1;
+};
+
+/// A (light, polygon) pair whose polygon is L-twisted.
+struct TwistedPolygon {
+  std::uint32_t light = 0;
+  std::uint32_t model = 0;
+  std::uint32_t polygon = 0;
 };
 
 /// Contour-edge statistics of one light's volumes.
 struct VolumeStats {
   std::uint32_t light = 0;
   std::uint64_t contour_edges = 0;
-  std::uint64_t boundary_contour_edges = 0;   ///< |Nb_C| = 1
-  std::uint64_t silhouette_contour_edges = 0; ///< |Nb_C| = 2 (or more, non-manifold)
-  std::uint64_t side_polygons = 0;
+  std::uint64_t boundary_contour_edges = 0;    ///< |Nb_C| = 1
+  std::uint64_t silhouette_contour_edges = 0;  ///< |Nb_C| = 2 (or more, non-manifold)
+  std::uint64_t side_polygons = 0;             ///< type 2, twisted polygons' sides included
+  std::uint64_t near_caps = 0;                 ///< type 1
+  std::uint64_t far_caps = 0;                  ///< type 3
+  std::uint64_t twisted_polygons = 0;
   std::uint64_t crow_all_edges_polygons = 0;  ///< Crow's baseline: one per edge of every polygon
+  /// Sphere of influence (point lights with light_end): models wholly
+  /// outside it get no volume; these are the side polygons (contour edges)
+  /// and the caps they would have had.
+  std::uint64_t culled_models = 0;
+  std::uint64_t culled_polygons = 0;
+  /// Models whose volumes end at the sphere rather than past the scene.
+  std::uint64_t truncated_models = 0;
+  /// Bytes the light's shadow polygons take (struct and vertices), and what
+  /// Crow's all-edges volumes extruded past the scene would take.
+  std::uint64_t bytes = 0;
+  std::uint64_t crow_bytes = 0;
+  double seconds = 0;  ///< time to build this light's volumes
 };
 
 struct ShadowVolumes {
   std::vector<ShadowPolygon> polygons;
-  std::vector<VolumeStats> stats;  ///< one per light
-  /// The extrusion factor k of each light (see ShadowPolygon).
-  std::vector<double> extrusion;
+  std::vector<VolumeStats> stats;       ///< one per light
+  std::vector<TwistedPolygon> twisted;  ///< the In_Shadow flags' pairs
+  /// [light][model]: the extrusion factor k of the model's volume for the
+  /// light (see ShadowPolygon); 0 where the model casts no volume for it
+  /// (casts_shadows false, or wholly outside the light's sphere).
+  std::vector<std::vector<double>> extrusion;
 };
 
 }  // namespace umbra::geometry

@@ -240,4 +240,42 @@ Sign projected_facing(std::span<const Vec3> polygon, const HPoint& light) {
   return Sign::zero;
 }
 
+namespace {
+
+/// Some plane through the point light L and two vertices leaves every vertex
+/// on one closed side: the cone of directions from L to the vertices is then
+/// contained in a closed half-space (its facets are such planes).
+bool in_closed_half_space(std::span<const Vec3> polygon, const Vec3& light) {
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (collinear(light, polygon[i], polygon[j])) continue;
+      bool positive = false, negative = false;
+      for (std::size_t k = 0; k < n && !(positive && negative); ++k) {
+        const Sign s = orientation(light, HPoint::point(polygon[i]), HPoint::point(polygon[j]),
+                                   HPoint::point(polygon[k]));
+        positive |= s == Sign::positive;
+        negative |= s == Sign::negative;
+      }
+      if (!(positive && negative)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool folds_seen_from(std::span<const Vec3> polygon, const HPoint& light, Sign facing) {
+  if (facing == Sign::zero) return true;
+  const std::size_t n = polygon.size();
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const Vec3& a = polygon[0];
+    const Vec3& b = polygon[k];
+    const Vec3& c = polygon[k + 1];
+    if (collinear(a, b, c)) continue;  // a dropped fan triangle covers nothing
+    if (orientation(a, HPoint::point(b), HPoint::point(c), light) != facing) return true;
+  }
+  return light.finite && !in_closed_half_space(polygon, light.v);
+}
+
 }  // namespace umbra::geometry

@@ -63,4 +63,16 @@ bool l_twisted(std::span<const Vec3> polygon, const HPoint& light);
 /// the answer is the sign of the count on one odd region, unspecified which.
 Sign projected_facing(std::span<const Vec3> polygon, const HPoint& light);
 
+/// Whether the surface of a non-planar polygon that is not L-twisted and
+/// faces `facing` (±1) may still not share its model's weighted volume: true
+/// when some fan triangle is edge-on to the light or turned against `facing`
+/// (the surface folds over itself in depth, so a point between two layers is
+/// shadowed with a count of -1 and could cancel another polygon's +1), or,
+/// for a point light, when no plane through L leaves every vertex on one
+/// closed side (the surface may wrap around L and cover some directions
+/// twice). Such a polygon is handled by parity, like a twisted one. A
+/// polygon without folds and inside a half-space has one layer along every
+/// ray from L, so its count is 0 or 1 everywhere. Exact.
+bool folds_seen_from(std::span<const Vec3> polygon, const HPoint& light, Sign facing);
+
 }  // namespace umbra::geometry

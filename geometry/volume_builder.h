@@ -1,17 +1,29 @@
 #pragma once
-// Shadow volumes from contour edges (Crow, with Bergeron's Nb_C).
+// Shadow volumes from contour edges (Crow), closed and generalised as
+// Bergeron describes: open and non-manifold models, L-twisted polygons,
+// caps, spheres of influence.
 #include <geometry/scene.h>
 #include <geometry/shadow_volume.h>
 
 namespace umbra::geometry {
 
-/// For every light and every shadow-casting model, one side polygon
-/// (type 2) per contour edge with the edge's weight as nb_c (contour.h),
-/// extruded away from the light past everything the scene holds: past every
-/// vertex, the eye and every point light. The extrusion factor is one k per
-/// light (ShadowVolumes::extrusion), so that |x' - L| = (1 + k)·|x - L|
-/// exceeds twice the largest distance from L to the scene's bounding box for
-/// every contour vertex x ≠ L.
-ShadowVolumes build_shadow_volumes(const Scene& scene);
+struct VolumeOptions {
+  /// Emit the caps: type 1 (the model's volume-casting polygons) and type 3
+  /// (the same projected to the far end). The volumes are closed then. The
+  /// renderer does without them: an eye ray to its first hit never crosses
+  /// a type 1 cap, and never reaches a type 3 cap (volume_reach.h).
+  bool caps = true;
+};
+
+/// For every light and every shadow-casting model:
+/// - one side polygon (type 2) per contour edge with the edge's weight as
+///   nb_c (contour.h), polygons that are L-twisted left out of the weights;
+/// - for every L-twisted polygon, its own volume: a side polygon on each of
+///   its edges and its caps, all `twisted`, sharing one group;
+/// - with options.caps, type 1 and type 3 caps: nb_c = facing and -facing;
+/// extruded by the model's factor k (volume_reach.h): past the scene for
+/// unlimited lights, to just beyond the sphere of influence for lights with
+/// light_end, where models wholly outside the sphere get no volume at all.
+ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options = {});
 
 }  // namespace umbra::geometry

@@ -26,7 +26,7 @@ VolumeCrossings::VolumeCrossings(const Scene& scene, const ShadowVolumes& volume
 }
 
 std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangle& hit,
-                                          std::uint32_t light_index) const {
+                                          std::uint32_t light_index, const EyeStart& start) const {
   const Light& light = scene_->lights[light_index];
   const HPoint lp = light_point(light);
   const SamplePoint p{ray.origin, ray.direction, hit.a, hit.b, hit.c};
@@ -39,7 +39,8 @@ std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangl
   std::vector<std::uint32_t> candidates;
   per_light_[light_index].query_segment(ray.origin, ray.origin + t * ray.direction, false, slack,
                                         candidates);
-  int total = 0;
+  int total = start.count[light_index];
+  std::vector<std::int32_t> toggled;  // twisted groups crossed, each once per crossing
   for (std::uint32_t c : candidates) {
     const ShadowPolygon& sp = volumes_->polygons[items_[light_index][c]];
     const Vec3& u = sp.vertices[0];
@@ -67,7 +68,20 @@ std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangl
     }
     // The quad (u, v, v', u') runs counter-clockwise seen from the side where
     // orientation(u, v, L, X) < 0.
-    total += side_eye == Sign::negative ? sp.nb_c : -sp.nb_c;
+    if (sp.group >= 0) {
+      toggled.push_back(sp.group);
+    } else {
+      total += side_eye == Sign::negative ? sp.nb_c : -sp.nb_c;
+    }
+  }
+  // A group crossed an odd number of times flips its flag: +1 if it was
+  // clear at the eye, -1 if it was set.
+  std::sort(toggled.begin(), toggled.end());
+  for (std::size_t i = 0; i < toggled.size();) {
+    std::size_t j = i;
+    while (j < toggled.size() && toggled[j] == toggled[i]) ++j;
+    if ((j - i) % 2 == 1) total += start.in_shadow[static_cast<std::size_t>(toggled[i])] ? -1 : 1;
+    i = j;
   }
   return total;
 }

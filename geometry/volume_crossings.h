@@ -3,6 +3,7 @@
 // exactly on the ideal side polygons: the renderer's answer wherever its
 // floating point cannot decide.
 #include <geometry/bvh.h>
+#include <geometry/eye_start.h>
 #include <geometry/sample_ray.h>
 #include <geometry/scene.h>
 #include <geometry/shadow_volume.h>
@@ -18,21 +19,25 @@ class VolumeCrossings {
   /// Keeps references to both; they must outlive this object.
   VolumeCrossings(const Scene& scene, const ShadowVolumes& volumes);
 
-  /// Σ ±nb_c over light `light`'s side polygons crossed by the eye segment
-  /// from the eye to the sample point P of `hit` (+nb_c when crossed from the
-  /// side on which the polygon runs counter-clockwise). A side polygon of
+  /// The count of light `light` at the sample point P of `hit`: the count at
+  /// the eye (`start`, eye_start.h) plus Σ ±nb_c over the light's side
+  /// polygons crossed by the eye segment from the eye to P (+nb_c when
+  /// crossed from the side on which the polygon runs counter-clockwise),
+  /// where the sides of a twisted polygon toggle its In_Shadow flag instead
+  /// and the count holds 1 for every flag set. A side polygon of
   /// edge (a, b) is the ideal wedge {L + s·(x - L) : x on ab, s ≥ 1} (for a
   /// directional light along D, {x + s·D : s ≥ 0}); the scene lies inside its
   /// truncation. nullopt when the segment meets some wedge in a degenerate
   /// way (touches an edge of it, starts or ends in its plane): the caller
   /// then decides the sample otherwise.
-  std::optional<int> count(const SampleRay& ray, const HitTriangle& hit, std::uint32_t light) const;
+  std::optional<int> count(const SampleRay& ray, const HitTriangle& hit, std::uint32_t light,
+                           const EyeStart& start) const;
 
  private:
   const Scene* scene_;
   const ShadowVolumes* volumes_;
-  std::vector<Bvh> per_light_;                    ///< over each light's shadow polygons
-  std::vector<std::vector<std::uint32_t>> items_; ///< BVH item → index in volumes
+  std::vector<Bvh> per_light_;                     ///< over each light's shadow polygons
+  std::vector<std::vector<std::uint32_t>> items_;  ///< BVH item → index in volumes
   double magnitude_ = 0;
 };
 

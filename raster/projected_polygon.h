@@ -77,6 +77,7 @@ struct ProjectedPolygon {
   std::uint32_t light = 0;
   std::int32_t weight =
       0;  ///< shadow: +nb_c if the eye sees the vertices counter-clockwise, else −nb_c
+  std::int32_t group = -1;  ///< shadow: the twisted group it toggles, or -1
 
   // Plane in camera space: dot(n, X) = n_dot_p0 for X on the plane.
   Vec3 n;

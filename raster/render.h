@@ -19,6 +19,10 @@ struct RenderStats {
   std::uint64_t contour_edges = 0;
   std::uint64_t shadow_polygons = 0;
   std::uint64_t exact_fallback_pixels = 0;
+  std::uint64_t twisted_polygons = 0;  ///< (light, polygon) pairs with an L-twist
+  /// Lights whose volumes the eye lies on the boundary of: their pixels are
+  /// all decided exactly.
+  std::uint64_t eye_degenerate_lights = 0;
   std::uint64_t pixels = 0;
   /// How the models' edges are shared (geometry::edge_topology), summed.
   std::uint64_t boundary_edges = 0;

@@ -70,6 +70,7 @@ struct Scene {
   std::vector<std::size_t> near_bucket;
   std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
   std::size_t lights = 0;
+  std::vector<std::uint8_t> group_start;  ///< every twisted group's flag at the eye
 };
 
 void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range, int height,
@@ -86,9 +87,10 @@ void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range
 }
 
 Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
-              std::size_t lights) {
+              std::size_t lights, std::span<const std::uint8_t> group_start) {
   Scene scene;
   scene.lights = lights;
+  scene.group_start.assign(group_start.begin(), group_start.end());
   scene.camera = make_camera_space(frame, input);
   const CameraSpace& camera = scene.camera;
   scene.polygons.reserve(input.size());
@@ -97,6 +99,11 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
       throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
                                   " names light " + std::to_string(input[k].light) + " of " +
                                   std::to_string(lights));
+    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].group >= 0 &&
+        static_cast<std::size_t>(input[k].group) >= group_start.size())
+      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
+                                  " names group " + std::to_string(input[k].group) + " of " +
+                                  std::to_string(group_start.size()));
     scene.polygons.push_back(project_polygon(input[k], static_cast<std::uint32_t>(k), camera));
   }
   const double ah = frame.a * frame.h;
@@ -159,7 +166,8 @@ class Band {
       : scene_(scene),
         result_(result),
         inside_(scene.polygons.size(), 0),
-        slot_(scene.polygons.size(), 0) {}
+        slot_(scene.polygons.size(), 0),
+        flags_(scene.group_start) {}
 
   void run(int row0, int row1) {
     const int width = scene_.camera.frame.width;
@@ -308,9 +316,24 @@ class Band {
         // a shadow polygon is pierced before the visible point.
         if (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near))
           uncertain = true;
-        if (polygon.kind == RasterPolygon::Kind::shadow && e.t > 0 && e.t < t_visible)
-          result_.count[p * scene_.lights + polygon.light] += polygon.weight;
+        if (polygon.kind == RasterPolygon::Kind::shadow && e.t > 0 && e.t < t_visible) {
+          if (polygon.group < 0) {
+            result_.count[p * scene_.lights + polygon.light] += polygon.weight;
+          } else {
+            flags_[static_cast<std::size_t>(polygon.group)] ^= 1;
+            toggled_.push_back(&polygon);
+          }
+        }
       }
+      // Each group whose flag ended other than it started changes the count
+      // by one; the flags are restored for the next pixel.
+      for (const ProjectedPolygon* t : toggled_) {
+        const auto g = static_cast<std::size_t>(t->group);
+        if (flags_[g] != scene_.group_start[g])
+          result_.count[p * scene_.lights + t->light] += flags_[g] ? 1 : -1;
+        flags_[g] = scene_.group_start[g];
+      }
+      toggled_.clear();
       if (visible) {
         result_.visible[p] = scene_.polygons[visible->polygon].id;
         result_.depth[p] = visible->t;
@@ -418,6 +441,8 @@ class Band {
   std::vector<DepthEntry> order_;          // the span's depth-ordered list
   std::vector<Vec3> ray_;                  // the row's sample directions in camera space
   std::vector<double> visible_error_;      // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;        // per twisted group: its flag along the current ray
+  std::vector<const ProjectedPolygon*> toggled_;  // twisted shadow polygons crossed at this pixel
 };
 
 }  // namespace
@@ -425,11 +450,11 @@ class Band {
 
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
-                               unsigned threads) {
+                               unsigned threads, std::span<const std::uint8_t> group_start) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
-  const detail::Scene scene = detail::prepare(frame, polygons, lights);
+  const detail::Scene scene = detail::prepare(frame, polygons, lights, group_start);
 
   ScanlineResult result;
   result.width = frame.width;

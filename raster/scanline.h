@@ -23,6 +23,10 @@ struct RasterPolygon {
   /// polygon from the side on which its vertices run counter-clockwise,
   /// subtracted when it crosses from the other side.
   std::int32_t nb_c = 0;
+  /// shadow only: -1, or the twisted polygon's group (Bergeron's In_Shadow
+  /// flag of a (light, polygon) pair) whose flag a crossing toggles instead
+  /// of adding nb_c.
+  std::int32_t group = -1;
 };
 
 struct ScanlineResult {
@@ -35,8 +39,10 @@ struct ScanlineResult {
   std::vector<std::uint8_t> uncertain;
 };
 
+/// `group_start` holds every group's flag at the eye (0 or 1); polygons may
+/// name groups below its size only.
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
-                               unsigned threads);
+                               unsigned threads, std::span<const std::uint8_t> group_start = {});
 
 }  // namespace umbra::raster

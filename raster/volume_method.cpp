@@ -1,7 +1,9 @@
-// Method::volume: Crow's shadow volumes from contour edges, Bergeron's Nb_C,
-// counted by the scanline renderer; what floating point cannot decide is
-// decided again exactly, so every pixel agrees with the oracle off boundaries.
+// Method::volume: shadow volumes from contour edges with Bergeron's Nb_C and
+// In_Shadow flags, counted by the scanline renderer from each light's count
+// at the eye; what floating point cannot decide is decided again exactly, so
+// every pixel agrees with the oracle off boundaries.
 #include <geometry/exact_predicates.h>
+#include <geometry/eye_start.h>
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
 #include <geometry/volume_crossings.h>
@@ -13,6 +15,8 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 
 namespace umbra::raster {
 
@@ -36,6 +40,7 @@ void append_shadow_polygons(const geometry::ShadowVolumes& volumes,
     raster.id = k;
     raster.light = s.light;
     raster.nb_c = s.nb_c;
+    raster.group = s.group;
     polygons.push_back(std::move(raster));
   }
 }
@@ -50,7 +55,12 @@ bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
                                         *light.light_end) == geometry::Sign::positive;
 }
 
-ShadowClass class_of_count(int count) {
+/// Every volume-casting polygon adds 1 inside its volume and nothing takes
+/// away, so a count is never negative; one that is shows a broken volume.
+ShadowClass class_of_count(int count, std::size_t pixel, std::uint32_t light) {
+  if (count < 0)
+    throw std::logic_error("shadow volume count " + std::to_string(count) + " at pixel " +
+                           std::to_string(pixel) + " for light " + std::to_string(light));
   return count == 0 ? ShadowClass::lit : ShadowClass::shadowed;
 }
 
@@ -63,19 +73,28 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   const std::size_t lights = scene.lights.size();
 
   auto start = Clock::now();
-  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene);
-  for (const geometry::VolumeStats& v : volumes.stats) stats.contour_edges += v.contour_edges;
+  // No caps: an eye ray to its first hit crosses none (volume_builder.h).
+  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene, {.caps = false});
+  const geometry::EyeStart eye = geometry::eye_start(index, volumes);
+  for (const geometry::VolumeStats& v : volumes.stats) {
+    stats.contour_edges += v.contour_edges;
+    stats.twisted_polygons += v.twisted_polygons;
+  }
   stats.shadow_polygons = volumes.polygons.size();
+  for (std::size_t l = 0; l < lights; ++l) stats.eye_degenerate_lights += eye.degenerate[l];
   stats.seconds_volumes = seconds_since(start);
 
   start = Clock::now();
   SurfaceTable table = surface_table(index);
   append_shadow_polygons(volumes, table.polygons);
-  const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads);
+  const ScanlineResult scan =
+      scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow);
   stats.seconds_raster = seconds_since(start);
 
   start = Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
+  bool any_degenerate = false;
+  for (std::uint8_t d : eye.degenerate) any_degenerate |= d != 0;
   Frame frame(camera.width, camera.height, lights);
   std::atomic<std::uint64_t> fallbacks{0};
   parallel_rows(camera.height, options.threads, [&](int j) {
@@ -86,7 +105,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
-      if (!scan.uncertain[pixel]) {
+      if (!scan.uncertain[pixel] && !any_degenerate) {
         const std::int32_t id = scan.visible[pixel];
         if (id < 0) {
           store_background(pixel, frame);
@@ -98,16 +117,17 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
         sample.normal = entry.normal;
         sample.color = entry.color;
         for (std::uint32_t l = 0; l < lights; ++l) {
-          sample.counts[l] = scan.count[pixel * lights + l];
+          sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
           sample.classes[l] = out_of_range(scene.lights[l], ray, tri)
                                   ? ShadowClass::out_of_range
-                                  : class_of_count(sample.counts[l]);
+                                  : class_of_count(sample.counts[l], pixel, l);
         }
         store_sample(scene, ray, sample, pixel, frame);
         continue;
       }
-      // Floating point could not decide this pixel: the visible surface and
-      // each light's count again, exactly.
+      // Floating point could not decide this pixel, or the eye lies on a
+      // volume's boundary: the visible surface and each light's count again,
+      // exactly.
       ++row_fallbacks;
       const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
       if (!hit) {
@@ -121,13 +141,15 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
           sample.counts[l] = 0;
           continue;
         }
-        if (const std::optional<int> count = crossings.count(ray, tri, l)) {
+        const std::optional<int> count =
+            eye.degenerate[l] ? std::nullopt : crossings.count(ray, tri, l, eye);
+        if (count) {
           sample.counts[l] = *count;
-          sample.classes[l] = class_of_count(*count);
+          sample.classes[l] = class_of_count(*count, pixel, l);
         } else {
           // The eye segment meets a volume degenerately (through an edge of a
-          // side polygon, in its plane): the oracle decides; count.<i> then
-          // holds 1 for shadowed and 0 for lit.
+          // side polygon, in its plane), or the eye lies on a volume: the
+          // oracle decides; count.<i> then holds 1 for shadowed, 0 for lit.
           sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;
           sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
         }

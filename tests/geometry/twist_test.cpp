@@ -592,3 +592,52 @@ TEST(ProjectedFacing, EveryOddRayAgreesOnNonPlanarUntwistedPolygons) {
 
 }  // namespace
 }  // namespace umbra::geometry
+
+namespace umbra::geometry {
+namespace {
+
+TEST(FoldsSeenFrom, AGentlyBentQuadSeenFromAboveHasOneLayer) {
+  const std::vector<Vec3> bent{{0, 0, 0}, {1, 0, 0}, {1, 0.25, 1}, {0, 0, 1}};
+  const HPoint above = HPoint::point({0.5, 5, 0.5});
+  ASSERT_FALSE(l_twisted(bent, above));
+  const Sign facing = projected_facing(bent, above);
+  EXPECT_EQ(facing, Sign::negative);  // clockwise seen from +y
+  EXPECT_FALSE(folds_seen_from(bent, above, facing));
+  EXPECT_TRUE(folds_seen_from(bent, above, -facing));
+  EXPECT_TRUE(folds_seen_from(bent, above, Sign::zero));
+}
+
+TEST(FoldsSeenFrom, AFanTriangleTurnedAwayIsAFold) {
+  // Seen from L this quad's outline is simple, but its fan triangle (5, 6, 7)
+  // faces the other way: the segment from a point between the two layers
+  // crosses the surface once (shadowed) while the count there is -facing.
+  const std::vector<Vec3> quad{{2, 1, 0}, {3, 1.5, 0}, {3, 1, 1}, {2, 1.5, 1}};
+  const HPoint light = HPoint::point({-1.75, 2.25, 3.5});
+  ASSERT_FALSE(l_twisted(quad, light));
+  const Sign facing = projected_facing(quad, light);
+  ASSERT_NE(facing, Sign::zero);
+  const Sign t0 = orientation(quad[0], HPoint::point(quad[1]), HPoint::point(quad[2]), light);
+  const Sign t1 = orientation(quad[0], HPoint::point(quad[2]), HPoint::point(quad[3]), light);
+  EXPECT_NE(t0, t1);
+  EXPECT_TRUE(folds_seen_from(quad, light, facing));
+}
+
+TEST(FoldsSeenFrom, APolygonAroundThePointLightWrapsIt) {
+  // A square ring of four vertices around the origin, alternately above and
+  // below it: no plane through the origin has all four on one side.
+  const std::vector<Vec3> ring{{1, 0, 0.5}, {0, 1, -0.5}, {-1, 0, 0.5}, {0, -1, -0.5}};
+  const HPoint origin = HPoint::point({0, 0, 0});
+  const Sign facing = projected_facing(ring, origin);
+  EXPECT_TRUE(folds_seen_from(ring, origin, facing));
+  EXPECT_TRUE(folds_seen_from(ring, origin, -facing));
+  // Seen from far above the same ring is one layer in a half-space.
+  const HPoint above = HPoint::point({0, 0, 50});
+  ASSERT_FALSE(l_twisted(ring, above));
+  EXPECT_FALSE(folds_seen_from(ring, above, projected_facing(ring, above)));
+  // A directional light never wraps.
+  const HPoint down = HPoint::at_infinity({0, 0, 1});
+  EXPECT_FALSE(folds_seen_from(ring, down, projected_facing(ring, down)));
+}
+
+}  // namespace
+}  // namespace umbra::geometry

@@ -464,6 +464,50 @@ TEST(ScanlineUncertainty, AdversarialMeshCertainPixelsMatchBruteForce) {
   EXPECT_GT(uncertain, 40);
 }
 
+TEST(Scanline, TwistedGroupsToggleTheirFlagInsteadOfAddingNbC) {
+  const CameraFrame frame = front_camera();
+  const RasterPolygon floor = surface(square_z(-4, -4, 4, 4, 0), 3);
+  // Group 0 (light 0): two overlapping squares; group 1 (light 1): one. Their
+  // nb_c (5) must be ignored: a crossing flips the flag, the count moves by 1.
+  RasterPolygon a = shadow(square_z(-1, -1, 1, 1, 2), 0, 5);
+  RasterPolygon b = shadow(square_z(0, -1, 2, 1, 1), 0, 5);
+  RasterPolygon c = shadow(square_z(-1, -1, 1, 1, 3), 1, 5);
+  a.group = b.group = 0;
+  c.group = 1;
+  const std::vector<RasterPolygon> polys{floor, a, b, c};
+  const std::vector<std::uint8_t> clear{0, 0}, set{1, 1};
+  const ScanlineResult r0 = scanline_render(frame, polys, 2, 1, clear);
+  const ScanlineResult r1 = scanline_render(frame, polys, 2, 2, set);
+  EXPECT_EQ(count_uncertain(r0) + count_uncertain(r1), 0);
+  int odd = 0, both = 0;
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 16; ++i) {
+      const Vec3 d = geometry::sample_ray(frame, i, j).direction;
+      const double ta = -3.0 / d.z, tb = -4.0 / d.z, tc = -2.0 / d.z;
+      const bool in_a = std::abs(ta * d.x) <= 1 && std::abs(ta * d.y) <= 1;
+      const bool in_b = tb * d.x >= 0 && tb * d.x <= 2 && std::abs(tb * d.y) <= 1;
+      const bool in_c = std::abs(tc * d.x) <= 1 && std::abs(tc * d.y) <= 1;
+      const std::size_t p = static_cast<std::size_t>(j) * 16 + i;
+      const int flip0 = (in_a != in_b) ? 1 : 0, flip1 = in_c ? 1 : 0;
+      EXPECT_EQ(r0.count[p * 2 + 0], flip0) << i << "," << j;
+      EXPECT_EQ(r0.count[p * 2 + 1], flip1) << i << "," << j;
+      EXPECT_EQ(r1.count[p * 2 + 0], -flip0) << i << "," << j;
+      EXPECT_EQ(r1.count[p * 2 + 1], -flip1) << i << "," << j;
+      odd += flip0;
+      both += in_a && in_b;
+    }
+  EXPECT_GT(odd, 10);
+  EXPECT_GT(both, 4);
+}
+
+TEST(Scanline, RejectsShadowPolygonOfUnknownGroup) {
+  RasterPolygon p = shadow(square_z(-1, -1, 1, 1, 0), 0, 1);
+  p.group = 2;
+  const std::vector<RasterPolygon> polys{p};
+  const std::vector<std::uint8_t> two{0, 0};
+  EXPECT_THROW(scanline_render(front_camera(), polys, 1, 1, two), std::invalid_argument);
+}
+
 TEST(Scanline, RejectsShadowPolygonOfUnknownLight) {
   const std::vector<RasterPolygon> polys{shadow(square_z(-1, -1, 1, 1, 0), 3, 1)};
   EXPECT_THROW(scanline_render(front_camera(), polys, 2, 1), std::invalid_argument);

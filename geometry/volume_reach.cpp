@@ -1,0 +1,104 @@
+#include <geometry/polygon_surface.h>
+#include <geometry/volume_reach.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace umbra::geometry {
+namespace {
+
+/// Relative enlargement of every reach: far ends clear what they must by a
+/// margin far above the rounding of the far vertices.
+constexpr double kMargin = 1e-6;
+
+double farthest_corner(const Box& box, const Vec3& from) {
+  double far = 0;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 corner{(c & 1) ? box.hi.x : box.lo.x, (c & 2) ? box.hi.y : box.lo.y,
+                      (c & 4) ? box.hi.z : box.lo.z};
+    far = std::max(far, length(corner - from));
+  }
+  return far;
+}
+
+double clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
+
+/// Distance from p to the triangle (a, b, c) in doubles (closest point by
+/// regions, after Ericson's Real-Time Collision Detection, 5.1.5).
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return length(ap);
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return length(bp);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(p - (a + clamp01(d1 / (d1 - d3)) * ab));
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return length(cp);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return length(p - (a + clamp01(d2 / (d2 - d6)) * ac));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return length(p - (b + clamp01((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)));
+  const double denom = 1 / (va + vb + vc);
+  return length(p - (a + (vb * denom) * ab + (vc * denom) * ac));
+}
+
+double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+}  // namespace
+
+LightReach light_reach(const Scene& scene, const Box& bounds, const Light& light) {
+  LightReach reach;
+  if (light.type == LightType::directional) {
+    reach.radius = length(bounds.hi - bounds.lo) * (1 + kMargin);
+    return reach;
+  }
+  reach.radius = farthest_corner(bounds, light.position) * (1 + kMargin);
+  if (light.light_end) {
+    const double sphere =
+        std::max(*light.light_end, length(scene.camera.eye - light.position)) * (1 + kMargin);
+    if (sphere < reach.radius) {
+      reach.radius = sphere;
+      reach.limited = true;
+    }
+  }
+  return reach;
+}
+
+double distance_lower_bound(const Model& model, std::span<const std::uint32_t> polygons,
+                            const Vec3& light) {
+  double nearest = std::numeric_limits<double>::infinity();
+  double scale = max_abs(light);
+  for (std::uint32_t pi : polygons) {
+    const Polygon& polygon = model.polygons[pi];
+    const PolygonSurface surface = polygon_surface(model.vertices, polygon);
+    for (const FanTriangle& t : surface.triangles) {
+      const Vec3& a = model.vertices[polygon[t.local[0]]];
+      const Vec3& b = model.vertices[polygon[t.local[1]]];
+      const Vec3& c = model.vertices[polygon[t.local[2]]];
+      scale = std::max({scale, max_abs(a), max_abs(b), max_abs(c)});
+      nearest = std::min(nearest, point_triangle_distance(light, a, b, c));
+    }
+  }
+  // The double computation errs by a few hundred ulps of the coordinates'
+  // magnitude at most; subtract far more than that, and a relative part.
+  const double bound = nearest * (1 - 1e-9) - 1e-12 * scale;
+  return bound > 0 && std::isfinite(bound) ? bound : 0;
+}
+
+double extrusion_factor(const Light& light, const LightReach& reach, double distance) {
+  if (light.type == LightType::directional) {
+    const double d = length(light.direction);
+    return reach.radius > 0 ? reach.radius / d * (1 + kMargin) : 1;
+  }
+  // (1 + k)·distance > radius, rounded up generously; k > 0 always, so the
+  // far end is never the near one.
+  if (!(distance > 0) || !(reach.radius > 0)) return 1;
+  return std::max(reach.radius * (1 + kMargin) / distance - 1, kMargin);
+}
+
+}  // namespace umbra::geometry
