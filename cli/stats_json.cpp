@@ -65,6 +65,67 @@ nlohmann::ordered_json validation_json(const ValidateRun& run,
   return j;
 }
 
+VolumeCounts count_volume_faces(const geometry::ShadowVolumes& volumes, std::size_t lights) {
+  VolumeCounts counts;
+  counts.lights.resize(lights);
+  for (const geometry::ShadowPolygon& p : volumes.polygons) {
+    if (p.light >= counts.lights.size()) counts.lights.resize(p.light + std::size_t{1});
+    const auto type = static_cast<std::size_t>(p.type);
+    for (FaceCounts* c : {&counts.all, &counts.lights[p.light]}) {
+      ++c->total;
+      if (type >= 1 && type <= 3) ++c->type[type - 1];
+      if (p.twisted) ++c->twisted;
+    }
+  }
+  return counts;
+}
+
+namespace {
+
+nlohmann::ordered_json faces_json(const FaceCounts& c) {
+  return {{"total", c.total},
+          {"type_1", c.type[0]},
+          {"type_2", c.type[1]},
+          {"type_3", c.type[2]},
+          {"twisted", c.twisted}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json volume_stats_json(const VolumeRun& run,
+                                         const geometry::ShadowVolumes& volumes,
+                                         const VolumeCounts& counts, const VolumeTimings& timings) {
+  nlohmann::ordered_json j;
+  j["scene"] = run.scene;
+  j["output"] = run.output;
+  j["sidecar"] =
+      run.sidecar.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.sidecar);
+  j["lights"] = run.lights;
+  j["models"] = run.models;
+  j["seconds"] = {{"load", timings.load},
+                  {"volumes", timings.volumes},
+                  {"write", timings.write},
+                  {"total", timings.total}};
+  j["faces"] = faces_json(counts.all);
+  j["per_light"] = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < counts.lights.size(); ++i) {
+    geometry::VolumeStats stats;
+    stats.light = static_cast<std::uint32_t>(i);
+    for (const geometry::VolumeStats& s : volumes.stats)
+      if (s.light == i) stats = s;
+    j["per_light"].push_back({
+        {"light", i},
+        {"contour_edges", stats.contour_edges},
+        {"boundary_contour_edges", stats.boundary_contour_edges},
+        {"silhouette_contour_edges", stats.silhouette_contour_edges},
+        {"side_polygons", stats.side_polygons},
+        {"crow_all_edges_polygons", stats.crow_all_edges_polygons},
+        {"faces", faces_json(counts.lights[i])},
+    });
+  }
+  return j;
+}
+
 void emit_json(const nlohmann::ordered_json& json, const std::string& destination) {
   // Paths need not be UTF-8; replace bad bytes rather than fail after the work is done.
   const std::string text =

@@ -1,11 +1,15 @@
 #pragma once
-// The JSON the verbs print or write: render statistics (--stats-json) and
-// validation reports (--json). Field names are documented in docs/cli.md.
+// The JSON the verbs print or write: render and volume statistics
+// (--stats-json) and validation reports (--json). Field names are documented
+// in docs/cli.md.
+#include <geometry/shadow_volume.h>
 #include <raster/render.h>
 #include <raster/validate.h>
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace umbra::cli {
 
@@ -41,6 +45,41 @@ struct ValidateRun {
 
 nlohmann::ordered_json validation_json(const ValidateRun& run,
                                        const raster::ValidationReport& report);
+
+/// Wall-clock seconds the volume verb measured around the library calls.
+struct VolumeTimings {
+  double load = 0;     ///< load_scene
+  double volumes = 0;  ///< build_shadow_volumes
+  double write = 0;    ///< write_volumes (mesh and sidecar)
+  double total = 0;    ///< from before loading to after writing
+};
+
+struct VolumeRun {
+  std::string scene;
+  std::string output;
+  std::string sidecar;  ///< empty for .ply
+  std::size_t lights = 0;
+  std::size_t models = 0;
+};
+
+/// Exported faces of one light, or of all of them.
+struct FaceCounts {
+  std::uint64_t total = 0;
+  std::uint64_t type[3] = {0, 0, 0};  ///< types 1, 2, 3
+  std::uint64_t twisted = 0;
+};
+
+struct VolumeCounts {
+  FaceCounts all;
+  std::vector<FaceCounts> lights;  ///< one per scene light, also those with no face
+};
+
+/// Counts faces per type and per light; `lights` is the scene's light count.
+VolumeCounts count_volume_faces(const geometry::ShadowVolumes& volumes, std::size_t lights);
+
+nlohmann::ordered_json volume_stats_json(const VolumeRun& run,
+                                         const geometry::ShadowVolumes& volumes,
+                                         const VolumeCounts& counts, const VolumeTimings& timings);
 
 /// Writes `json` (indented, newline-terminated) to stdout when `destination`
 /// is "-", else to that file, whole or not at all.

@@ -1,10 +1,11 @@
 # Runs the umbra executable once and checks what a user would see:
 #   cmake -DUMBRA=<exe> -DWORK_DIR=<dir> -DARGS=<a|b|c> -DEXPECT_EXIT=<n>
 #         [-DSTDOUT_REGEX=<re>] [-DSTDERR_REGEX=<re>] [-DSETUP_FILES=<f|g>]
-#         [-DMUST_NOT_EXIST=<p|q>] -P run_umbra.cmake
+#         [-DMUST_NOT_EXIST=<p|q>] [-DMUST_EXIST=<p|q>] -P run_umbra.cmake
 # WORK_DIR is emptied first and is the working directory of the command;
 # SETUP_FILES are created there (empty) beforehand; MUST_NOT_EXIST paths are
-# relative to it and checked afterwards (no partial output left behind).
+# relative to it and checked afterwards (no partial output left behind);
+# MUST_EXIST paths likewise (the outputs a successful run promises).
 # Lists use '|' because ';' does not survive add_test's argument passing.
 cmake_minimum_required(VERSION 3.25)
 
@@ -17,6 +18,7 @@ endforeach()
 string(REPLACE "|" ";" args "${ARGS}")
 string(REPLACE "|" ";" setup_files "${SETUP_FILES}")
 string(REPLACE "|" ";" must_not_exist "${MUST_NOT_EXIST}")
+string(REPLACE "|" ";" must_exist "${MUST_EXIST}")
 
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -44,6 +46,11 @@ endif()
 foreach(p IN LISTS must_not_exist)
   if(EXISTS "${WORK_DIR}/${p}")
     string(APPEND failures "'${p}' exists but must not\n")
+  endif()
+endforeach()
+foreach(p IN LISTS must_exist)
+  if(NOT EXISTS "${WORK_DIR}/${p}")
+    string(APPEND failures "'${p}' does not exist but must\n")
   endif()
 endforeach()
 

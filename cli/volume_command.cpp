@@ -1,0 +1,105 @@
+#include <cli/exit_codes.h>
+#include <cli/output_files.h>
+#include <cli/stats_json.h>
+#include <cli/volume_command.h>
+#include <fmt/format.h>
+#include <geometry/input_error.h>
+#include <geometry/scene_io.h>
+#include <geometry/volume_builder.h>
+#include <geometry/volume_export.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace umbra::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// "light 0: 120, light 1: 96"
+std::string faces_per_light(const VolumeCounts& counts) {
+  std::string text;
+  for (std::size_t i = 0; i < counts.lights.size(); ++i)
+    text += fmt::format("{}light {}: {}", i == 0 ? "" : ", ", i, counts.lights[i].total);
+  return text.empty() ? "no lights" : text;
+}
+
+}  // namespace
+
+CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
+  CLI::App* cmd = app.add_subcommand("volume", "Export every light's shadow volume");
+  cmd->add_option("SCENE", args.scene, "Scene file (.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args.output,
+                  "Output mesh: .ply (attributes as face properties) or .obj/.off (attributes "
+                  "in the sidecar OUT.json)")
+      ->required()
+      ->type_name("OUT");
+  cmd->add_option("--stats-json", args.stats_json,
+                  "Write counts per light and timings as JSON to FILE ('-' = stdout)")
+      ->type_name("FILE");
+  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  cmd->footer(
+      "Example:\n"
+      "  umbra volume data/scenes/default.json -o out/default.volume.ply\n"
+      "Per face: light, model, polygon, edge, type (1/2/3), nb_c, twisted "
+      "(docs/volume-export.md).\n"
+      "Files are written only when everything succeeded.");
+  return cmd;
+}
+
+int run_volume(const VolumeArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path scene_path = args.scene;
+  const fs::path output = args.output;
+  const bool stats_to_stdout = args.stats_json == "-";
+
+  // Cheap checks first: nothing is built for an output that cannot be written.
+  check_output_path(output, {".ply", ".obj", ".off"});
+  const auto sidecar = geometry::volume_sidecar_path(output);
+  if (sidecar) check_output_path(*sidecar, {});
+  if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});
+
+  VolumeTimings timings;
+  auto phase = std::chrono::steady_clock::now();
+  const geometry::Scene scene = geometry::load_scene(scene_path);
+  timings.load = seconds_since(phase);
+
+  phase = std::chrono::steady_clock::now();
+  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene);
+  timings.volumes = seconds_since(phase);
+
+  phase = std::chrono::steady_clock::now();
+  geometry::write_volumes(volumes, output);
+  timings.write = seconds_since(phase);
+  timings.total = seconds_since(start);
+
+  const VolumeCounts counts = count_volume_faces(volumes, scene.lights.size());
+  if (!args.stats_json.empty()) {
+    VolumeRun run;
+    run.scene = scene_path.string();
+    run.output = output.string();
+    run.sidecar = sidecar ? sidecar->string() : std::string();
+    run.lights = scene.lights.size();
+    run.models = scene.models.size();
+    emit_json(volume_stats_json(run, volumes, counts, timings), args.stats_json);
+  }
+
+  if (!args.quiet) {
+    // With the statistics on stdout, keep stdout pure JSON.
+    std::FILE* stream = stats_to_stdout ? stderr : stdout;
+    fmt::print(stream, "wrote {}{}: {} faces (type 1: {}, type 2: {}, type 3: {}; {}), {:.2f} s\n",
+               output.string(), sidecar ? " + " + sidecar->filename().string() : std::string(),
+               counts.all.total, counts.all.type[0], counts.all.type[1], counts.all.type[2],
+               faces_per_light(counts), timings.total);
+  }
+  return kExitSuccess;
+}
+
+}  // namespace umbra::cli

@@ -1,0 +1,23 @@
+#pragma once
+// `umbra volume SCENE -o OUT.ply|.obj|.off [--stats-json FILE] [--quiet]`
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace umbra::cli {
+
+struct VolumeArgs {
+  std::string scene;
+  std::string output;      ///< .ply, .obj or .off (checked before any work)
+  std::string stats_json;  ///< empty: none; "-": stdout
+  bool quiet = false;
+};
+
+/// Adds the `volume` subcommand to `app`, parsing into `args`.
+CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args);
+
+/// Loads the scene, builds every light's shadow volume and exports it
+/// (geometry/volume_export.h). Returns the exit code; throws
+/// geometry::InputError on bad input (before any output file is written).
+int run_volume(const VolumeArgs& args);
+
+}  // namespace umbra::cli
