@@ -6,13 +6,18 @@
 //   shadowing X (the oracle's answer), whichever start point is chosen;
 // - the eye's starting counts equal that same number at the eye.
 #include <geometry/exact_predicates.h>
+#include <geometry/mesh_io.h>
+#include <geometry/volume_export.h>
 #include <geometry/eye_start.h>
 #include <geometry/scene_index.h>
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <bit>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <map>
 #include <random>
@@ -128,6 +133,46 @@ TEST(VolumeClosure, WeightedBoundaryCancelsEdgeByEdge) {
     for (const auto& [edge, w] : weighted) EXPECT_EQ(w, 0) << "an edge does not cancel";
     for (const auto& [edge, odd] : parity) EXPECT_EQ(odd, 0) << "a twisted volume is open";
   }
+}
+
+TEST(VolumeClosure, ExportedFacesCancelEdgeByEdgeWhenReadBack) {
+  // The same check on what another tool sees: the OBJ's faces read back with
+  // the attributes of its JSON sidecar.
+  const auto dir = std::filesystem::path(testing::TempDir()) / "umbra_closure_export";
+  std::filesystem::create_directories(dir);
+  int faces_checked = 0;
+  for (const auto& lights : light_sets()) {
+    const ShadowVolumes volumes = build_shadow_volumes(test_scene(lights));
+    const auto obj = dir / "volume.obj";
+    write_volumes(volumes, obj);
+    const PolygonSoup soup = read_polygon_soup(obj);
+    std::ifstream sidecar(*volume_sidecar_path(obj));
+    const nlohmann::json attributes = nlohmann::json::parse(sidecar).at("attributes");
+    ASSERT_EQ(soup.polygons.size(), volumes.polygons.size());
+    std::map<std::pair<Key, Key>, long> weighted;
+    std::map<std::tuple<int, int, int, Key, Key>, int> parity;
+    for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+      const Polygon& face = soup.polygons[f];
+      const int nb_c = attributes["nb_c"][f], twisted = attributes["twisted"][f];
+      const int light = attributes["light"][f], model = attributes["model"][f],
+                polygon = attributes["polygon"][f];
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        Key a = key(soup.vertices[face[k]]), b = key(soup.vertices[face[(k + 1) % face.size()]]);
+        if (twisted) {
+          if (b < a) std::swap(a, b);
+          parity[{light, model, polygon, a, b}] ^= 1;
+        } else {
+          weighted[{a, b}] += nb_c;
+          weighted[{b, a}] -= nb_c;
+        }
+      }
+      ++faces_checked;
+    }
+    for (const auto& [edge, w] : weighted) ASSERT_EQ(w, 0);
+    for (const auto& [edge, odd] : parity) ASSERT_EQ(odd, 0);
+  }
+  EXPECT_GT(faces_checked, 300);
+  std::filesystem::remove_all(dir);
 }
 
 /// Σ ±nb_c (twisted: parity per group, 1 for each odd group) over the faces

@@ -91,7 +91,7 @@ ShadowVolumes hand_built_volumes() {
   };
   v.stats = {VolumeStats{}, VolumeStats{}};
   v.stats[1].light = 1;
-  v.extrusion = {10.0, 20.0};
+  v.extrusion = {{10.0}, {20.0}};
   return v;
 }
 
