@@ -18,7 +18,10 @@ PolygonSurface polygon_surface(std::span<const Vec3> vertices, const Polygon& po
   if (ib >= n || ic >= n) return surface;  // all on one line: degenerate
 
   surface.shape = PolygonShape::planar;
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = ib + 1; k < n; ++k) {
+    // The three reference vertices lie on their plane by construction; asking
+    // would send the filter to exact arithmetic for a certain zero.
+    if (k == ic) continue;
     if (orientation(a, at(ib), at(ic), at(k)) != Sign::zero) {
       surface.shape = PolygonShape::non_planar;
       break;
