@@ -4,6 +4,7 @@
 #include <cli/render_command.h>
 #include <cli/stats_json.h>
 #include <fmt/format.h>
+#include <geometry/input_error.h>
 #include <geometry/scene_io.h>
 #include <raster/image_io.h>
 #include <raster/render.h>
@@ -47,6 +48,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Write timings per phase and counts as JSON to FILE ('-' = stdout)")
       ->type_name("FILE");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  cmd->add_flag("--no-shadows", args.no_shadows,
+                "Plain render without any shadow: every light reaches every sample in its "
+                "range (volume method only; the baseline shadow costs are measured against)");
   cmd->footer(
       "Example:\n"
       "  umbra render data/scenes/default.json -o out/default.exr --stats-json out/stats.json\n"
@@ -61,6 +65,8 @@ int run_render(const RenderArgs& args) {
       args.output.empty() ? fs::path(scene_path.stem().string() + ".png") : fs::path(args.output);
   const bool stats_to_stdout = args.stats_json == "-";
 
+  if (args.no_shadows && args.method != "volume")
+    throw geometry::InputError("--no-shadows", "applies to --method volume only");
   // Cheap checks first: a long render must not end in "unknown extension".
   check_output_path(output, {".png", ".exr"});
   if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});
@@ -73,6 +79,7 @@ int run_render(const RenderArgs& args) {
   raster::RenderOptions options;
   options.method = parse_method(args.method);
   options.threads = args.threads;
+  options.shadows = !args.no_shadows;
   raster::RenderStats stats;
   phase = std::chrono::steady_clock::now();
   const raster::Frame frame = raster::render(scene, options, &stats);

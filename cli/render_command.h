@@ -13,6 +13,7 @@ struct RenderArgs {
   unsigned threads = 0;           ///< 0: all hardware threads
   std::string stats_json;         ///< empty: none; "-": stdout
   bool quiet = false;
+  bool no_shadows = false;  ///< the plain render (volume method only)
 };
 
 /// Adds the `render` subcommand to `app`, parsing into `args`.

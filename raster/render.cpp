@@ -3,6 +3,8 @@
 #include <raster/render.h>
 #include <raster/render_methods.h>
 
+#include <stdexcept>
+
 namespace umbra::raster {
 
 Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderStats* stats) {
@@ -17,6 +19,8 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
   }
   const geometry::SceneIndex index(scene);
   s.pixels = static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height;
+  if (!options.shadows && options.method != Method::volume)
+    throw std::invalid_argument("render: shadows can only be turned off for Method::volume");
   switch (options.method) {
     case Method::exact:
       return render_exact(index, options, s);

@@ -10,6 +10,10 @@ enum class Method { volume, exact };
 struct RenderOptions {
   Method method = Method::volume;
   unsigned threads = 0;  ///< 0: all hardware threads
+  /// false: no shadows at all, every light reaches every sample in its range
+  /// (Method::volume only): the plain render that shadow costs are measured
+  /// against. The shadow.<i> AOVs then say lit / out of range only.
+  bool shadows = true;
 };
 
 struct RenderStats {

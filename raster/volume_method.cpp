@@ -74,8 +74,17 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
 
   auto start = Clock::now();
   // No caps: an eye ray to its first hit crosses none (volume_builder.h).
-  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene, {.caps = false});
-  const geometry::EyeStart eye = geometry::eye_start(index, volumes);
+  // Without shadows: no volume at all, every count starts and stays at 0.
+  const geometry::ShadowVolumes volumes =
+      options.shadows ? geometry::build_shadow_volumes(scene, {.caps = false})
+                      : geometry::ShadowVolumes{};
+  geometry::EyeStart eye;
+  if (options.shadows) {
+    eye = geometry::eye_start(index, volumes);
+  } else {
+    eye.count.assign(lights, 0);
+    eye.degenerate.assign(lights, 0);
+  }
   for (const geometry::VolumeStats& v : volumes.stats) {
     stats.contour_edges += v.contour_edges;
     stats.twisted_polygons += v.twisted_polygons;
@@ -141,8 +150,9 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
           sample.counts[l] = 0;
           continue;
         }
-        const std::optional<int> count =
-            eye.degenerate[l] ? std::nullopt : crossings.count(ray, tri, l, eye);
+        const std::optional<int> count = !options.shadows    ? std::optional<int>(0)
+                                         : eye.degenerate[l] ? std::nullopt
+                                                             : crossings.count(ray, tri, l, eye);
         if (count) {
           sample.counts[l] = *count;
           sample.classes[l] = class_of_count(*count, pixel, l);

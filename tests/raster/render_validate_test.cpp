@@ -120,6 +120,35 @@ TEST(Render, DegenerateSceneUsesTheExactFallback) {
   EXPECT_GT(report.lights[0].boundary + report.lights[1].boundary, 1000u);
 }
 
+TEST(Render, WithoutShadowsEveryLightReachesEverySampleInRange) {
+  const geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/two_lights.json");
+  RenderStats stats;
+  const Frame plain =
+      render(scene, {.method = Method::volume, .threads = 2, .shadows = false}, &stats);
+  const Frame shadowed = render(scene, {.method = Method::volume, .threads = 2});
+  EXPECT_EQ(stats.shadow_polygons, 0u);
+  int out_of_range = 0, was_shadowed = 0;
+  for (std::size_t l = 0; l < plain.lights(); ++l) {
+    for (std::size_t p = 0; p < plain.depth.size(); ++p) {
+      EXPECT_EQ(plain.count[l][p], 0.0f);
+      // Range does not depend on shadows; shadowed samples become lit.
+      if (shadowed.shadow[l][p] == kShadowOutOfRange) {
+        EXPECT_EQ(plain.shadow[l][p], kShadowOutOfRange) << l << " " << p;
+        ++out_of_range;
+      } else {
+        EXPECT_EQ(plain.shadow[l][p], kShadowLit) << l << " " << p;
+        was_shadowed += shadowed.shadow[l][p] == kShadowShadowed;
+      }
+    }
+  }
+  EXPECT_GT(out_of_range, 100);
+  EXPECT_GT(was_shadowed, 1000);
+  EXPECT_EQ(plain.depth, shadowed.depth);
+  EXPECT_THROW(render(scene, {.method = Method::exact, .threads = 1, .shadows = false}),
+               std::invalid_argument);
+}
+
 TEST(Validate, CountsEveryPlantedErrorAndMarksItInTheMask) {
   const geometry::Scene scene = square_over_floor();
   const Frame frame = render(scene, {.method = Method::exact, .threads = 2});
