@@ -10,6 +10,9 @@ find_package(Threads REQUIRED)
 if(UMBRA_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
+if(UMBRA_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
 
 # Debian 12's OpenImageIO config lists /usr/include/opencv4 among its include
 # directories although umbra's headers never need OpenCV; without

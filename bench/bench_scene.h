@@ -1,0 +1,15 @@
+#pragma once
+// Benchmark scenes: a mesh set on a floor under N point lights, at a fixed
+// camera, built in code so that only the mesh file has to exist.
+#include <geometry/scene.h>
+
+#include <filesystem>
+
+namespace umbra::bench {
+
+/// The mesh scaled to unit height, standing on a floor of 6 x 6 units, lit by
+/// `lights` point lights on a ring above it (total intensity 1), seen by a
+/// width x height camera from the front and above.
+geometry::Scene mesh_on_floor(const std::filesystem::path& mesh, int lights, int width, int height);
+
+}  // namespace umbra::bench

@@ -1,0 +1,90 @@
+// The renderer's frame time with and without shadows on real meshes
+// (Google Benchmark). Meshes come from UMBRA_BENCH_MESHES (paths separated
+// by ':'); scripts/bench.sh fills it from CGAL's data tarball. Without it only
+// the smoke benchmark on data/meshes/torus.off runs, which CTest uses.
+//
+// Counters per run: shadow polygons, exact fallbacks, samples/s (pixels x
+// lights per second). The ratio shadowed/plain is computed by
+// scripts/bench_table.py from the JSON output.
+#include <benchmark/benchmark.h>
+#include <raster/render.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench_scene.h"
+
+namespace umbra::bench {
+namespace {
+
+void render_frame(benchmark::State& state, const geometry::Scene& scene, bool shadows) {
+  raster::RenderStats stats;
+  for (auto _ : state) {
+    raster::Frame frame = raster::render(
+        scene, {.method = raster::Method::volume, .threads = 0, .shadows = shadows}, &stats);
+    benchmark::DoNotOptimize(frame.beauty.data());
+  }
+  const double samples =
+      static_cast<double>(stats.pixels) * static_cast<double>(scene.lights.size());
+  state.counters["lights"] = static_cast<double>(scene.lights.size());
+  state.counters["shadow_polygons"] = static_cast<double>(stats.shadow_polygons);
+  state.counters["exact_fallbacks"] = static_cast<double>(stats.exact_fallback_pixels);
+  state.counters["samples_per_s"] =
+      benchmark::Counter(samples, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["s_volumes"] = stats.seconds_volumes;
+  state.counters["s_raster"] = stats.seconds_raster;
+  state.counters["s_decide"] = stats.seconds_decide;
+}
+
+std::vector<std::string> split(const char* text) {
+  std::vector<std::string> out;
+  if (text == nullptr) return out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ':');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+void register_benchmarks() {
+  const std::string torus = std::string(UMBRA_DATA_DIR) + "/meshes/torus.off";
+  for (const bool shadows : {true, false}) {
+    const geometry::Scene smoke = mesh_on_floor(torus, 2, 160, 90);
+    benchmark::RegisterBenchmark(
+        (std::string("Smoke/torus/lights:2/") + (shadows ? "shadows" : "plain")).c_str(),
+        [smoke, shadows](benchmark::State& s) { render_frame(s, smoke, shadows); })
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+  }
+  for (const std::string& mesh : split(std::getenv("UMBRA_BENCH_MESHES"))) {
+    const std::string stem = std::filesystem::path(mesh).stem().string();
+    for (const int lights : {1, 4, 16}) {
+      // Load once per (mesh, lights); both passes render the same scene.
+      const geometry::Scene scene = mesh_on_floor(mesh, lights, 1280, 720);
+      for (const bool shadows : {true, false}) {
+        benchmark::RegisterBenchmark(
+            ("Render/" + stem + "/lights:" + std::to_string(lights) + "/" +
+             (shadows ? "shadows" : "plain"))
+                .c_str(),
+            [scene, shadows](benchmark::State& s) { render_frame(s, scene, shadows); })
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(1)
+            ->Repetitions(3)
+            ->ReportAggregatesOnly(true);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace umbra::bench
+
+int main(int argc, char** argv) {
+  umbra::bench::register_benchmarks();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The renderer benchmark on CGAL's data meshes (issue 4): frame time with and
+# without shadows at 1280x720 with 1, 4 and 16 lights, as a table.
+# Usage: scripts/bench.sh [extra Google Benchmark flags]
+# Needs Debian's libcgal-demo for the meshes (installed here if missing);
+# writes out/bench.json and prints the table of scripts/bench_table.py.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+tarball=/usr/share/doc/libcgal-dev/data.tar.gz
+if [ ! -f "$tarball" ]; then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO=sudo
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends libcgal-demo
+fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --target umbra_render_bench
+data=build/cgal-data
+if [ ! -d "$data/data/meshes" ]; then
+  mkdir -p "$data"
+  tar -xzf "$tarball" -C "$data" data/meshes/bunny00.off data/meshes/elephant.off \
+    data/meshes/refined_elephant.off
+fi
+m="$data/data/meshes"
+mkdir -p out
+UMBRA_BENCH_MESHES="$m/elephant.off:$m/bunny00.off:$m/refined_elephant.off" \
+  ./build/bench/umbra_render_bench --benchmark_filter=Render \
+  --benchmark_out=out/bench.json --benchmark_out_format=json "$@"
+python3 scripts/bench_table.py out/bench.json

@@ -1,0 +1,32 @@
+#!/usr/bin/env python3
+"""Turns Google Benchmark JSON from umbra_render_bench into a Markdown table:
+per mesh and light count, the median frame time with shadows and without,
+their ratio, samples per second and exact fallbacks per frame."""
+import json
+import sys
+
+
+def main(path):
+    runs = json.load(open(path))["benchmarks"]
+    median = {}
+    for r in runs:
+        if r.get("aggregate_name") not in (None, "median"):
+            continue
+        _, mesh, lights, mode = r["run_name"].split("/")[:4]
+        median[(mesh, lights, mode)] = r
+    print("| mesh | lights | shadows (ms) | plain (ms) | ratio | samples/s (shadows) | "
+          "shadow polygons | exact fallbacks |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for (mesh, lights, mode), r in sorted(median.items()):
+        if mode != "shadows":
+            continue
+        plain = median.get((mesh, lights, "plain"))
+        t = r["real_time"]
+        tp = plain["real_time"] if plain else float("nan")
+        print(f"| {mesh} | {lights.split(':')[1]} | {t:.0f} | {tp:.0f} | {t / tp:.2f} | "
+              f"{r['samples_per_s'] / 1e6:.1f} M | {r['shadow_polygons']:.0f} | "
+              f"{r['exact_fallbacks']:.0f} |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "out/bench.json")
