@@ -125,6 +125,9 @@ void write_exr(const Frame& frame, const fs::path& path) {
   spec.z_channel = -1;
   spec.attribute("oiio:ColorSpace", "Linear");
   spec.attribute("compression", "zip");
+  // No time stamp: the same render gives the same bytes (OpenEXR writers
+  // otherwise record the current time).
+  spec.attribute("DateTime", "");
 
   std::vector<float> pixels(n * channels);
   for (std::size_t p = 0; p < n; ++p) {

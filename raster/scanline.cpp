@@ -247,76 +247,91 @@ class Band {
     // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
     for (std::size_t k = 0; k < crossings_.size(); ++k) {
       toggle(scene_.edges[crossings_[k].edge].edge.polygon);
-      if (k + 1 == crossings_.size() || active_.empty()) continue;
+      // A span without surfaces is background whatever shadow polygons cross
+      // it (Crow's saving): nothing to do.
+      if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
       const int i0 = clamp_column(std::ceil(crossings_[k].x - 0.5), width);
       const int i1 = clamp_column(std::ceil(crossings_[k + 1].x - 0.5), width);
       if (i0 < i1) shade_span(i0, i1, j);
     }
     // Each polygon has an even number of active edges on a row, so every
     // toggle is undone by now; clear anyway so one bad row cannot leak.
-    for (std::uint32_t polygon : active_) inside_[polygon] = 0;
-    active_.clear();
+    for (std::uint32_t polygon : surfaces_) inside_[polygon] = 0;
+    for (std::uint32_t polygon : shadows_) inside_[polygon] = 0;
+    surfaces_.clear();
+    shadows_.clear();
 
     flag_near_edges(j);
     flag_degenerate(j);
   }
 
   void toggle(std::uint32_t polygon) {
+    std::vector<std::uint32_t>& list =
+        scene_.polygons[polygon].kind == RasterPolygon::Kind::shadow ? shadows_ : surfaces_;
     if (inside_[polygon]) {
       inside_[polygon] = 0;
-      const std::uint32_t last = active_.back();
-      active_[slot_[polygon]] = last;
+      const std::uint32_t last = list.back();
+      list[slot_[polygon]] = last;
       slot_[last] = slot_[polygon];
-      active_.pop_back();
+      list.pop_back();
     } else {
       inside_[polygon] = 1;
-      slot_[polygon] = static_cast<std::uint32_t>(active_.size());
-      active_.push_back(polygon);
+      slot_[polygon] = static_cast<std::uint32_t>(list.size());
+      list.push_back(polygon);
     }
   }
 
-  /// One span: a depth-ordered list of its polygons, kept in order pixel to
-  /// pixel by insertion sort (depths along a span change little).
+  void measure(DepthEntry& entry, const Vec3& d) const {
+    const ProjectedPolygon& polygon = scene_.polygons[entry.polygon];
+    entry.t = polygon.depth(d);
+    if (std::isnan(entry.t)) entry.t = kInfinity;  // ray in the plane; flagged by its error
+    entry.err = polygon.depth_error(d, entry.t);
+  }
+
+  /// One span. Its surfaces keep a depth-ordered list, re-sorted pixel to
+  /// pixel by insertion (depths along a span change little); the first with
+  /// t > 0 is visible. Shadow polygons are not inserted: one behind the
+  /// visible point changes nothing, so each is only compared with it
+  /// (Bergeron's saving), which also makes their mutual order irrelevant.
   void shade_span(int i0, int i1, int j) {
     const double z_near = scene_.camera.z_near;
     order_.clear();
-    for (std::uint32_t polygon : active_) order_.push_back({0, 0, polygon});
+    for (std::uint32_t polygon : surfaces_) order_.push_back({0, 0, polygon});
     for (int i = i0; i < i1; ++i) {
       const Vec3& d = ray_[i];
-      for (DepthEntry& entry : order_) {
-        const ProjectedPolygon& polygon = scene_.polygons[entry.polygon];
-        entry.t = polygon.depth(d);
-        if (std::isnan(entry.t)) entry.t = kInfinity;  // ray in the plane; flagged below
-        entry.err = polygon.depth_error(d, entry.t);
-      }
+      for (DepthEntry& entry : order_) measure(entry, d);
       for (std::size_t k = 1; k < order_.size(); ++k) {
         const DepthEntry e = order_[k];
         std::size_t m = k;
         for (; m > 0 && before(e, order_[m - 1]); --m) order_[m] = order_[m - 1];
         order_[m] = e;
       }
-      // Visible: the first surface with t > 0.
       const DepthEntry* visible = nullptr;
       for (const DepthEntry& e : order_)
-        if (e.t > 0 && scene_.polygons[e.polygon].kind == RasterPolygon::Kind::surface) {
+        if (e.t > 0) {
           visible = &e;
           break;
         }
-      const double t_visible = visible ? visible->t : kInfinity;
       const std::size_t p = pixel(i, j);
       bool uncertain = false;
-      for (const DepthEntry& e : order_) {
-        const ProjectedPolygon& polygon = scene_.polygons[e.polygon];
-        // A depth error bound that is not finite means the ray (nearly) lies
-        // in the polygon's plane: nothing about this polygon is decided.
-        if (!std::isfinite(e.err)) uncertain = true;
-        // t against 0: in front of the eye or behind it.
-        if (too_close(e.t, e.err, 0.0, 0.0, z_near)) uncertain = true;
-        // t against the visible depth: which surface is in front, or whether
-        // a shadow polygon is pierced before the visible point.
-        if (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near))
+      // A depth error bound that is not finite means the ray (nearly) lies
+      // in the polygon's plane: nothing about this polygon is decided. Then
+      // t against 0 (in front of the eye or behind it) and against the
+      // visible depth (which surface is in front; whether a shadow polygon is
+      // pierced before the visible point).
+      const auto check = [&](const DepthEntry& e) {
+        if (!std::isfinite(e.err) || too_close(e.t, e.err, 0.0, 0.0, z_near) ||
+            (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near)))
           uncertain = true;
-        if (polygon.kind == RasterPolygon::Kind::shadow && e.t > 0 && e.t < t_visible) {
+      };
+      for (const DepthEntry& e : order_) check(e);
+      if (visible) {
+        for (std::uint32_t k : shadows_) {
+          DepthEntry e{0, 0, k};
+          measure(e, d);
+          check(e);
+          if (!(e.t > 0 && e.t < visible->t)) continue;
+          const ProjectedPolygon& polygon = scene_.polygons[k];
           if (polygon.group < 0) {
             result_.count[p * scene_.lights + polygon.light] += polygon.weight;
           } else {
@@ -436,8 +451,9 @@ class Band {
   std::vector<Crossing> crossings_;        // the active edge list, x-sorted
   std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
   std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
-  std::vector<std::uint32_t> slot_;        // per polygon: its place in active_
-  std::vector<std::uint32_t> active_;      // polygons inside at the current span
+  std::vector<std::uint32_t> slot_;        // per polygon: its place in surfaces_ or shadows_
+  std::vector<std::uint32_t> surfaces_;    // surfaces inside at the current span
+  std::vector<std::uint32_t> shadows_;     // shadow polygons inside at the current span
   std::vector<DepthEntry> order_;          // the span's depth-ordered list
   std::vector<Vec3> ray_;                  // the row's sample directions in camera space
   std::vector<double> visible_error_;      // depth error bound of each pixel's visible hit

@@ -34,8 +34,12 @@ struct ScanlineResult {
   std::size_t lights = 0;
   std::vector<std::int32_t> visible;  ///< surface id per pixel; -1 where the ray hits nothing
   std::vector<double> depth;          ///< ray parameter t of the visible hit (infinity if none)
-  std::vector<std::int32_t>
-      count;  ///< [pixel * lights + light]: summed weights in front of the hit
+  /// [pixel * lights + light]: the summed weights of the shadow polygons in
+  /// front of the hit, plus, for every twisted group whose flag differs at
+  /// the hit from its value at the eye, +1 (set there) or -1 (cleared there);
+  /// the count at the eye is the caller's. 0 where the ray hits nothing:
+  /// spans without a surface are skipped.
+  std::vector<std::int32_t> count;
   std::vector<std::uint8_t> uncertain;
 };
 
