@@ -48,6 +48,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Write timings per phase and counts as JSON to FILE ('-' = stdout)")
       ->type_name("FILE");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  cmd->add_option("--spp", args.spp,
+                  "Beauty samples per pixel: 1, 9 or 25 (an odd grid; shadow.<i>, count.<i> and "
+                  "depth stay the pixel centre's, which validate checks)")
+      ->check(CLI::IsMember({1, 9, 25}))
+      ->type_name("N");
   cmd->add_flag("--no-shadows", args.no_shadows,
                 "Plain render without any shadow: every light reaches every sample in its "
                 "range (volume method only; the baseline shadow costs are measured against)");
@@ -80,6 +85,7 @@ int run_render(const RenderArgs& args) {
   options.method = parse_method(args.method);
   options.threads = args.threads;
   options.shadows = !args.no_shadows;
+  options.spp = args.spp;
   raster::RenderStats stats;
   phase = std::chrono::steady_clock::now();
   const raster::Frame frame = raster::render(scene, options, &stats);

@@ -14,6 +14,7 @@ struct RenderArgs {
   std::string stats_json;         ///< empty: none; "-": stdout
   bool quiet = false;
   bool no_shadows = false;  ///< the plain render (volume method only)
+  int spp = 1;              ///< beauty samples per pixel: 1, 9 or 25
 };
 
 /// Adds the `render` subcommand to `app`, parsing into `args`.

@@ -2,12 +2,32 @@
 #include <geometry/scene_index.h>
 #include <raster/render.h>
 #include <raster/render_methods.h>
+#include <raster/supersample.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace umbra::raster {
 
+namespace {
+
+int supersampling_factor(int spp) {
+  for (const int s : {1, 3, 5})
+    if (spp == s * s) return s;
+  throw std::invalid_argument("render: spp must be 1, 9 or 25, got " + std::to_string(spp));
+}
+
+}  // namespace
+
 Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  if (const int s = supersampling_factor(options.spp); s > 1) {
+    geometry::Scene fine = scene;
+    fine.camera.width *= s;
+    fine.camera.height *= s;
+    RenderOptions centre = options;
+    centre.spp = 1;
+    return downsample(render(fine, centre, stats), s);
+  }
   RenderStats local;
   RenderStats& s = stats ? *stats : local;
   s = RenderStats{};

@@ -14,6 +14,9 @@ struct RenderOptions {
   /// (Method::volume only): the plain render that shadow costs are measured
   /// against. The shadow.<i> AOVs then say lit / out of range only.
   bool shadows = true;
+  /// Beauty samples per pixel: 1, 9 or 25 (an odd s × s grid; supersample.h).
+  /// The AOVs stay the pixel centre's.
+  int spp = 1;
 };
 
 struct RenderStats {
