@@ -183,16 +183,20 @@ class Band {
       if (scene_.edges[e].near.last >= row0) near_edges_.push_back(e);
     }
     for (int j = row0; j < row1; ++j) {
+      std::erase_if(crossings_,
+                    [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
+      // Edges carried over from the previous row stay nearly sorted; the
+      // row's new edges are sorted apart and merged in (appending them to an
+      // insertion sort would move each across the whole list).
+      const std::size_t carried = j > row0 ? crossings_.size() : 0;
       if (j > row0) {
         for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
           crossings_.push_back({0, scene_.by_scan_row[k]});
         for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
           near_edges_.push_back(scene_.by_near_row[k]);
       }
-      std::erase_if(crossings_,
-                    [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
       std::erase_if(near_edges_, [&](std::uint32_t e) { return scene_.edges[e].near.last < j; });
-      scan_row(j);
+      scan_row(j, carried);
     }
   }
 
@@ -220,7 +224,8 @@ class Band {
     return x;
   }
 
-  void scan_row(int j) {
+  /// Row j; crossings_[0, carried) were active on the row before.
+  void scan_row(int j, std::size_t carried) {
     const CameraSpace& camera = scene_.camera;
     const int width = camera.frame.width;
     for (int i = 0; i < width; ++i) {
@@ -232,18 +237,22 @@ class Band {
       visible_error_[i] = 0;
       for (std::size_t l = 0; l < scene_.lights; ++l) result_.count[p * scene_.lights + l] = 0;
     }
-    // x sort: insertion sort of the active edges' crossings, nearly sorted
-    // already since the previous row.
+    // x sort: insertion sort of the carried crossings (nearly sorted since
+    // the previous row), the new ones sorted apart, then one merge.
+
     for (Crossing& c : crossings_) c.x = crossing_x(scene_.edges[c.edge].edge, j);
-    for (std::size_t k = 1; k < crossings_.size(); ++k) {
+    const auto less = [](const Crossing& a, const Crossing& b) {
+      return a.x < b.x || (a.x == b.x && a.edge < b.edge);
+    };
+    for (std::size_t k = 1; k < carried; ++k) {
       const Crossing c = crossings_[k];
       std::size_t m = k;
-      for (; m > 0 && (crossings_[m - 1].x > c.x ||
-                       (crossings_[m - 1].x == c.x && crossings_[m - 1].edge > c.edge));
-           --m)
-        crossings_[m] = crossings_[m - 1];
+      for (; m > 0 && less(c, crossings_[m - 1]); --m) crossings_[m] = crossings_[m - 1];
       crossings_[m] = c;
     }
+    const auto middle = crossings_.begin() + static_cast<std::ptrdiff_t>(carried);
+    std::sort(middle, crossings_.end(), less);
+    std::inplace_merge(crossings_.begin(), middle, crossings_.end(), less);
     // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
     for (std::size_t k = 0; k < crossings_.size(); ++k) {
       toggle(scene_.edges[crossings_[k].edge].edge.polygon);
