@@ -1,6 +1,7 @@
 #include <cli/exit_codes.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
+#include <cli/progress_bar.h>
 #include <cli/render_command.h>
 #include <cli/stats_json.h>
 #include <fmt/format.h>
@@ -86,9 +87,12 @@ int run_render(const RenderArgs& args) {
   options.threads = args.threads;
   options.shadows = !args.no_shadows;
   options.spp = args.spp;
+  ProgressBar bar(!args.quiet);
+  options.progress = bar.callback();
   raster::RenderStats stats;
   phase = std::chrono::steady_clock::now();
   const raster::Frame frame = raster::render(scene, options, &stats);
+  bar.finish();
   timings.render = seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();

@@ -16,6 +16,8 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   const std::size_t lights = scene.lights.size();
   Frame frame(camera.width, camera.height, lights);
   const auto start = std::chrono::steady_clock::now();
+  Progress progress(options.progress);
+  progress.phase("exact", static_cast<std::uint64_t>(camera.height));
 
   parallel_rows(camera.height, options.threads, [&](int j) {
     PixelSample sample;
@@ -36,6 +38,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
       }
       store_sample(scene, ray, sample, pixel, frame);
     }
+    progress.advance();
   });
 
   stats.seconds_decide =

@@ -2,6 +2,7 @@
 // One entry point for every render method.
 #include <geometry/scene.h>
 #include <raster/frame.h>
+#include <raster/progress.h>
 
 namespace umbra::raster {
 
@@ -17,6 +18,9 @@ struct RenderOptions {
   /// Beauty samples per pixel: 1, 9 or 25 (an odd s × s grid; supersample.h).
   /// The AOVs stay the pixel centre's.
   int spp = 1;
+  /// Told the phase and fraction done while rendering, from any thread, at
+  /// most ten times a second (raster/progress.h); empty: nobody listens.
+  ProgressCallback progress{};
 };
 
 struct RenderStats {

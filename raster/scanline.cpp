@@ -162,9 +162,10 @@ bool before(const DepthEntry& a, const DepthEntry& b) {
 /// One band of scanlines [row0, row1), with its own active edge list.
 class Band {
  public:
-  Band(const Scene& scene, ScanlineResult& result)
+  Band(const Scene& scene, ScanlineResult& result, Progress* progress)
       : scene_(scene),
         result_(result),
+        progress_(progress),
         inside_(scene.polygons.size(), 0),
         slot_(scene.polygons.size(), 0),
         flags_(scene.group_start) {}
@@ -197,6 +198,7 @@ class Band {
       }
       std::erase_if(near_edges_, [&](std::uint32_t e) { return scene_.edges[e].near.last < j; });
       scan_row(j, carried);
+      if (progress_) progress_->advance();
     }
   }
 
@@ -457,6 +459,7 @@ class Band {
 
   const Scene& scene_;
   ScanlineResult& result_;
+  Progress* progress_;
   std::vector<Crossing> crossings_;        // the active edge list, x-sorted
   std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
   std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
@@ -475,7 +478,8 @@ class Band {
 
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
-                               unsigned threads, std::span<const std::uint8_t> group_start) {
+                               unsigned threads, std::span<const std::uint8_t> group_start,
+                               Progress* progress) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
@@ -499,7 +503,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   const auto run_band = [&](int b) {
     const int row0 = static_cast<int>(static_cast<long long>(frame.height) * b / bands);
     const int row1 = static_cast<int>(static_cast<long long>(frame.height) * (b + 1) / bands);
-    detail::Band band(scene, result);
+    detail::Band band(scene, result, progress);
     band.run(row0, row1);
   };
   {

@@ -4,6 +4,7 @@
 // close to call, the pixel is flagged `uncertain` and the caller decides it
 // again exactly; every other pixel's answer is final.
 #include <geometry/sample_ray.h>
+#include <raster/progress.h>
 
 #include <cstdint>
 #include <span>
@@ -45,8 +46,10 @@ struct ScanlineResult {
 
 /// `group_start` holds every group's flag at the eye (0 or 1); polygons may
 /// name groups below its size only.
+/// `progress`, if given, is advanced by one per finished row.
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
-                               unsigned threads, std::span<const std::uint8_t> group_start = {});
+                               unsigned threads, std::span<const std::uint8_t> group_start = {},
+                               Progress* progress = nullptr);
 
 }  // namespace umbra::raster

@@ -72,6 +72,8 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const std::size_t lights = scene.lights.size();
 
+  Progress progress(options.progress);
+  progress.phase("volumes", 1);
   auto start = Clock::now();
   // No caps: an eye ray to its first hit crosses none (volume_builder.h).
   // Without shadows: no volume at all, every count starts and stays at 0.
@@ -96,8 +98,9 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   start = Clock::now();
   SurfaceTable table = surface_table(index);
   append_shadow_polygons(volumes, table.polygons);
+  progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
   const ScanlineResult scan =
-      scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow);
+      scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow, &progress);
   stats.seconds_raster = seconds_since(start);
 
   start = Clock::now();
@@ -106,6 +109,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   for (std::uint8_t d : eye.degenerate) any_degenerate |= d != 0;
   Frame frame(camera.width, camera.height, lights);
   std::atomic<std::uint64_t> fallbacks{0};
+  progress.phase("shading", static_cast<std::uint64_t>(camera.height));
   parallel_rows(camera.height, options.threads, [&](int j) {
     PixelSample sample;
     sample.classes.resize(lights);
@@ -167,6 +171,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
       store_sample(scene, ray, sample, pixel, frame);
     }
     fallbacks += row_fallbacks;
+    progress.advance();
   });
   stats.exact_fallback_pixels = fallbacks;
   stats.seconds_decide = seconds_since(start);
