@@ -35,7 +35,7 @@ std::string faces_per_light(const VolumeCounts& counts) {
 
 CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
   CLI::App* cmd = app.add_subcommand("volume", "Export every light's shadow volume");
-  cmd->add_option("SCENE", args.scene, "Scene file (.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
                   "Output mesh: .ply (attributes as face properties) or .obj/.off (attributes "
                   "in the sidecar OUT.json)")

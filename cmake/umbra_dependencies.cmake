@@ -6,9 +6,11 @@ find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(fmt REQUIRED)
+find_package(TinyGLTF REQUIRED)  # TinyGLTF::TinyGLTF (README.Debian's plain name is wrong)
 find_package(Threads REQUIRED)
 if(UMBRA_BUILD_TESTS)
   find_package(GTest REQUIRED)
+  find_package(assimp REQUIRED)  # tests only: an independent reader of exported glTF volumes
 endif()
 
 # Debian 12's OpenImageIO config lists /usr/include/opencv4 among its include
