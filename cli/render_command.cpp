@@ -34,7 +34,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with its shadows");
-  cmd->add_option("SCENE", args.scene, "Scene file (.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
                   "Output image: .png (beauty) or .exr (beauty + shadow.<i>, count.<i>, depth); "
                   "default <scene stem>.png in the current directory")

@@ -35,10 +35,11 @@ std::string faces_per_light(const VolumeCounts& counts) {
 
 CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
   CLI::App* cmd = app.add_subcommand("volume", "Export every light's shadow volume");
-  cmd->add_option("SCENE", args.scene, "Scene file (.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
-                  "Output mesh: .ply (attributes as face properties) or .obj/.off (attributes "
-                  "in the sidecar OUT.json)")
+                  "Output mesh: .ply (attributes as face properties), .obj/.off (attributes "
+                  "in the sidecar OUT.json) or .gltf/.glb (float32 positions; attributes as "
+                  "per-vertex _FACE, _LIGHT, ... on each face's own vertices)")
       ->required()
       ->type_name("OUT");
   cmd->add_option("--stats-json", args.stats_json,
@@ -61,7 +62,7 @@ int run_volume(const VolumeArgs& args) {
   const bool stats_to_stdout = args.stats_json == "-";
 
   // Cheap checks first: nothing is built for an output that cannot be written.
-  check_output_path(output, {".ply", ".obj", ".off"});
+  check_output_path(output, {".ply", ".obj", ".off", ".gltf", ".glb"});
   const auto sidecar = geometry::volume_sidecar_path(output);
   if (sidecar) check_output_path(*sidecar, {});
   if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});

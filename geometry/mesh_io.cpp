@@ -1,6 +1,7 @@
 // Entry points of the mesh readers: reading the file, choosing the format by
 // extension, and the checks every format shares. The formats themselves live
 // in off_reader.cpp, obj_reader.cpp, ply_reader.cpp and stl_reader.cpp.
+#include <geometry/gltf_io.h>
 #include <geometry/mesh_io.h>
 #include <geometry/mesh_reader_util.h>
 
@@ -25,9 +26,11 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::pa
     soup = detail::parse_ply(bytes, where);
   } else if (extension == ".stl") {
     soup = detail::parse_stl(bytes, where);
+  } else if (is_gltf_path(name)) {
+    soup = parse_gltf_polygon_soup(bytes, name);
   } else {
     throw InputError(where, "unknown mesh extension '" + name.extension().string() +
-                                "'; expected .off, .obj, .ply or .stl");
+                                "'; expected .off, .obj, .ply, .stl, .gltf or .glb");
   }
   if (soup.polygons.empty()) throw InputError(where, "empty mesh: the file has no polygon");
   return soup;

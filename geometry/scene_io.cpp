@@ -5,6 +5,7 @@
 // double (1e999) and duplicated keys by their field path. Validation then
 // walks the document once, naming each field by its path
 // ("lights[1].position"); unknown keys are errors so that typos never pass.
+#include <geometry/gltf_io.h>
 #include <geometry/input_error.h>
 #include <geometry/mesh_io.h>
 #include <geometry/sample_ray.h>
@@ -454,7 +455,7 @@ Scene load_scene(const std::filesystem::path& file) {
     throw InputError(file.string(), std::string("cannot open scene file: ") + std::strerror(errno));
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad()) throw InputError(file.string(), "cannot read scene file: I/O error");
-  return parse_scene(text, file);
+  return is_gltf_path(file) ? parse_gltf_scene(text, file) : parse_scene(text, file);
 }
 
 }  // namespace umbra::geometry

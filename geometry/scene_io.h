@@ -7,8 +7,9 @@
 
 namespace umbra::geometry {
 
-/// Loads and validates a scene: mesh paths are relative to the scene file;
-/// transforms are applied (geometry/transform.h). Throws InputError naming
+/// Loads and validates a scene: a `.gltf` or `.glb` file (case-insensitive)
+/// as glTF 2.0 (geometry/gltf_io.h), any other as the JSON format, whose
+/// mesh paths are relative to the scene file; transforms are applied (geometry/transform.h). Throws InputError naming
 /// the file and the JSON field ("models[2].transform.scale") or mesh line.
 Scene load_scene(const std::filesystem::path& file);
 

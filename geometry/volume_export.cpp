@@ -15,6 +15,7 @@
 #include <geometry/input_error.h>
 #include <geometry/mesh_reader_util.h>
 #include <geometry/volume_export.h>
+#include <geometry/volume_export_gltf.h>
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
@@ -44,15 +45,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-enum class Format { ply, obj, off };
+enum class Format { ply, obj, off, gltf, glb };
 
 Format format_of(const fs::path& path) {
   const std::string ext = detail::to_lower(path.extension().string());
   if (ext == ".ply") return Format::ply;
   if (ext == ".obj") return Format::obj;
   if (ext == ".off") return Format::off;
+  if (ext == ".gltf") return Format::gltf;
+  if (ext == ".glb") return Format::glb;
   throw InputError(path.string(), "unknown volume extension '" + path.extension().string() +
-                                      "'; use .ply, .obj or .off");
+                                      "'; use .ply, .obj, .off, .gltf or .glb");
 }
 
 /// The faces of the export on an indexed vertex list: `faces[i]` is polygon i
@@ -345,7 +348,8 @@ void write_all_or_nothing(const std::vector<std::pair<fs::path, std::string>>& f
 }  // namespace
 
 std::optional<fs::path> volume_sidecar_path(const fs::path& path) {
-  if (format_of(path) == Format::ply) return std::nullopt;
+  const Format format = format_of(path);
+  if (format == Format::ply || format == Format::gltf || format == Format::glb) return std::nullopt;
   fs::path sidecar = path;
   sidecar += ".json";
   return sidecar;
@@ -353,8 +357,16 @@ std::optional<fs::path> volume_sidecar_path(const fs::path& path) {
 
 void write_volumes(const ShadowVolumes& volumes, const fs::path& path) {
   const Format format = format_of(path);
-  const IndexedFaces indexed = index_faces(volumes);
   std::vector<std::pair<fs::path, std::string>> files;
+  if (format == Format::gltf || format == Format::glb) {
+    // Faces share no vertices in glTF (each carries its own attributes), so
+    // the halfedge indexing below is not needed; its checks are.
+    for (std::size_t i = 0; i < volumes.polygons.size(); ++i) check_polygon(volumes.polygons[i], i);
+    files.emplace_back(path, detail::gltf_volume_bytes(volumes, format == Format::glb, path.string()));
+    write_all_or_nothing(files);
+    return;
+  }
+  const IndexedFaces indexed = index_faces(volumes);
   switch (format) {
     case Format::ply:
       files.emplace_back(path, ply_bytes(volumes, indexed));
@@ -367,6 +379,9 @@ void write_volumes(const ShadowVolumes& volumes, const fs::path& path) {
       files.emplace_back(sidecar, sidecar_text(volumes, path));
       break;
     }
+    case Format::gltf:
+    case Format::glb:
+      break;  // written above
   }
   write_all_or_nothing(files);
 }

@@ -18,6 +18,11 @@ namespace umbra::geometry {
 /// - `.obj`, `.off`: coordinates as the shortest decimal text that reads back
 ///   to the same double; the attributes go to the sidecar `<path>.json`
 ///   (volume_sidecar_path), as arrays in face order.
+/// - `.gltf`, `.glb`: glTF 2.0 with float32 positions (rounded: not exact);
+///   one triangle primitive per light; each face fan-triangulated on its own
+///   vertices, which carry its attributes as float custom attributes
+///   `_FACE`, `_LIGHT`, ... (docs/volume-export.md, "glTF"). A coordinate
+///   beyond the float range is an InputError.
 ///
 /// Faces appear in `volumes.polygons` order, each with its vertices in their
 /// order (the orientation that gives `nb_c` its sign: the count added when
@@ -38,8 +43,9 @@ namespace umbra::geometry {
 void write_volumes(const ShadowVolumes& volumes, const std::filesystem::path& path);
 
 /// The sidecar JSON that write_volumes writes beside `path`: `<path>.json`
-/// for `.obj` and `.off`, nothing for `.ply` (its faces carry the
-/// attributes). Throws InputError naming `path` for an unknown extension.
+/// for `.obj` and `.off`; nothing for `.ply` (its faces carry the
+/// attributes) nor for `.gltf`/`.glb` (their vertices do). Throws InputError
+/// naming `path` for an unknown extension.
 std::optional<std::filesystem::path> volume_sidecar_path(const std::filesystem::path& path);
 
 }  // namespace umbra::geometry

@@ -477,7 +477,7 @@ TEST(MeshIo, DirectoryIsAnError) {
 
 TEST(MeshIo, UnknownExtensionIsAnError) {
   EXPECT_EQ(error_of_text("v 0 0 0", "mesh.txt"),
-            "mesh.txt: unknown mesh extension '.txt'; expected .off, .obj, .ply or .stl");
+            "mesh.txt: unknown mesh extension '.txt'; expected .off, .obj, .ply, .stl, .gltf or .glb");
   EXPECT_TRUE(starts_with(error_of_text("", "noext"), "noext: unknown mesh extension ''"));
 }
 
