@@ -50,6 +50,10 @@ struct Model {
   std::vector<Vec3> vertices;  ///< world space
   std::vector<Polygon> polygons;
   Rgb color{0.8, 0.8, 0.8};
+  /// Blinn-Phong highlight, added only for lights that reach the sample
+  /// (never in shadow: Williams' remark on highlights). Black: none.
+  Rgb specular{0, 0, 0};
+  double shininess = 32;
   bool casts_shadows = true;
 };
 

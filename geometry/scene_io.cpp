@@ -380,11 +380,19 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
 Model read_model(const SceneReader& in, const Json& v, std::size_t index) {
   const std::string path = item("models", index);
   in.expect_object(v, path);
-  in.check_keys(v, path, {"name", "mesh", "polygons", "color", "casts_shadows", "transform"});
+  in.check_keys(
+      v, path,
+      {"name", "mesh", "polygons", "color", "specular", "shininess", "casts_shadows", "transform"});
   Model model;
   model.name = v.contains("name") ? in.string(v["name"], child(path, "name"))
                                   : "model" + std::to_string(index);
   if (v.contains("color")) model.color = in.rgb(v["color"], child(path, "color"));
+  if (v.contains("specular")) model.specular = in.rgb(v["specular"], child(path, "specular"));
+  if (v.contains("shininess")) {
+    model.shininess = in.number(v["shininess"], child(path, "shininess"));
+    if (!(model.shininess >= 1 && model.shininess <= 10000))
+      in.fail(child(path, "shininess"), "must be in [1, 10000]");
+  }
   if (v.contains("casts_shadows"))
     model.casts_shadows = in.boolean(v["casts_shadows"], child(path, "casts_shadows"));
   Transform transform;

@@ -32,7 +32,8 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
     frame.shadow[i][pixel] = shadow_value(sample.classes[i]);
     frame.count[i][pixel] = static_cast<float>(sample.counts[i]);
   }
-  const geometry::Rgb c = shade(scene, sample.color, point, normal, lit);
+  const geometry::Rgb c =
+      shade(scene, sample.look, point, normal, geometry::normalize(-ray.direction), lit);
   frame.beauty[3 * pixel + 0] = static_cast<float>(c.r);
   frame.beauty[3 * pixel + 1] = static_cast<float>(c.g);
   frame.beauty[3 * pixel + 2] = static_cast<float>(c.b);

@@ -4,6 +4,7 @@
 #include <geometry/sample_ray.h>
 #include <geometry/shadow_oracle.h>
 #include <raster/frame.h>
+#include <raster/shading.h>
 
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace umbra::raster {
 struct PixelSample {
   double t = 0;           ///< ray parameter of the visible point H = eye + t·d
   geometry::Vec3 normal;  ///< unit normal of the visible surface, either orientation
-  geometry::Rgb color;
+  SurfaceLook look;
   std::vector<geometry::ShadowClass> classes;  ///< per light
   std::vector<int> counts;                     ///< per light: the final depth count
 };

@@ -19,8 +19,10 @@ double light_falloff(const Light& light, double distance) {
   return std::pow((end - distance) / (end - light.dec_begin), light.decrease);
 }
 
-Rgb shade(const geometry::Scene& scene, const Rgb& color, const Vec3& point, const Vec3& normal,
-          const std::vector<bool>& lit) {
+Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
+          const Vec3& normal, const Vec3& to_eye, const std::vector<bool>& lit) {
+  const Rgb& color = look.color;
+  const bool glossy = look.specular.r > 0 || look.specular.g > 0 || look.specular.b > 0;
   Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     if (!lit[i]) continue;
@@ -33,12 +35,17 @@ Rgb shade(const geometry::Scene& scene, const Rgb& color, const Vec3& point, con
     } else {
       to_light = -light.direction;
     }
-    const double cosine = dot(normal, normalize(to_light));
+    const Vec3 l = normalize(to_light);
+    const double cosine = dot(normal, l);
     if (cosine <= 0 || factor <= 0) continue;
-    const double w = cosine * factor;
-    out.r += color.r * light.intensity.r * w;
-    out.g += color.g * light.intensity.g * w;
-    out.b += color.b * light.intensity.b * w;
+    double highlight = 0;
+    if (glossy) {
+      const Vec3 h = normalize(l + to_eye);
+      highlight = std::pow(std::max(0.0, dot(normal, h)), look.shininess);
+    }
+    out.r += light.intensity.r * factor * (color.r * cosine + look.specular.r * highlight);
+    out.g += light.intensity.g * factor * (color.g * cosine + look.specular.g * highlight);
+    out.b += light.intensity.b * factor * (color.b * cosine + look.specular.b * highlight);
   }
   return out;
 }

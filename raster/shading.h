@@ -10,12 +10,22 @@ namespace umbra::raster {
 /// light_end, 0 from light_end on. 1 for unlimited and directional lights.
 double light_falloff(const geometry::Light& light, double distance);
 
-/// Ambient + sum over the lit lights of color · intensity · falloff · max(0, n·l).
-/// `normal` is the unit normal facing the eye; `lit[i]` says whether light i
-/// reaches the point (its count is zero and it is in range).
-geometry::Rgb shade(const geometry::Scene& scene, const geometry::Rgb& color,
+/// How a surface reflects: diffuse color and a Blinn-Phong highlight.
+struct SurfaceLook {
+  geometry::Rgb color;
+  geometry::Rgb specular{0, 0, 0};
+  double shininess = 32;
+};
+
+/// Ambient·color + Σ over the lit lights of intensity · falloff ·
+/// (color · max(0, n·l) + specular · max(0, n·h)^shininess where n·l > 0),
+/// h the half vector of l and the direction to the eye. `normal` is the unit
+/// normal facing the eye; `to_eye` the unit direction from the point to the
+/// eye; `lit[i]` says whether light i reaches the point (its count is zero
+/// and it is in range): a shadowed light adds nothing, highlight included.
+geometry::Rgb shade(const geometry::Scene& scene, const SurfaceLook& look,
                     const geometry::Vec3& point, const geometry::Vec3& normal,
-                    const std::vector<bool>& lit);
+                    const geometry::Vec3& to_eye, const std::vector<bool>& lit);
 
 /// The sRGB transfer curve, for the PNG's 8 bits (input clamped to [0, 1]).
 float encode_srgb(float linear);

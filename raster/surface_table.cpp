@@ -22,6 +22,10 @@ Vec3 newell_normal(const geometry::SceneIndex& index, const geometry::IndexedPol
   return n;
 }
 
+SurfaceLook look_of(const geometry::Model& model) {
+  return {model.color, model.specular, model.shininess};
+}
+
 Vec3 unit_or_zero(const Vec3& v) {
   const double l = geometry::length(v);
   return l > 0 && std::isfinite(l) ? v / l : Vec3{0, 0, 0};
@@ -44,7 +48,7 @@ geometry::HitTriangle set_surface(const geometry::SceneIndex& index, const geome
   const geometry::HitTriangle tri = geometry::hit_triangle(index, hit);
   sample.t = geometry::ray_plane_parameter(ray.origin, ray.direction, tri.a, tri.b, tri.c);
   sample.normal = hit_normal(index, hit);
-  sample.color = index.scene().models[index.polygons()[hit.polygon].model].color;
+  sample.look = look_of(index.scene().models[index.polygons()[hit.polygon].model]);
   return tri;
 }
 
@@ -53,12 +57,12 @@ SurfaceTable surface_table(const geometry::SceneIndex& index) {
   const auto polygons = index.polygons();
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     const geometry::IndexedPolygon& p = polygons[i];
-    const geometry::Rgb color = index.scene().models[p.model].color;
+    const SurfaceLook look = look_of(index.scene().models[p.model]);
     const auto add = [&](std::uint32_t triangle, std::vector<Vec3> vertices) {
       SurfaceEntry entry;
       entry.hit = geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false};
       entry.normal = hit_normal(index, entry.hit);
-      entry.color = color;
+      entry.look = look;
       RasterPolygon raster;
       raster.vertices = std::move(vertices);
       raster.kind = RasterPolygon::Kind::surface;

@@ -18,7 +18,7 @@ struct SurfaceEntry {
   /// entry (for a planar polygon any of its triangles: all share its plane).
   geometry::SurfaceHit hit;
   geometry::Vec3 normal;  ///< unit normal of that plane (either orientation)
-  geometry::Rgb color;
+  SurfaceLook look;
 };
 
 struct SurfaceTable {

@@ -128,7 +128,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
         const geometry::HitTriangle tri = geometry::hit_triangle(index, entry.hit);
         sample.t = scan.depth[pixel];
         sample.normal = entry.normal;
-        sample.color = entry.color;
+        sample.look = entry.look;
         for (std::uint32_t l = 0; l < lights; ++l) {
           sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
           sample.classes[l] = out_of_range(scene.lights[l], ray, tri)

@@ -279,3 +279,24 @@ TEST(SceneIo, ModelRules) {
 
 }  // namespace
 }  // namespace umbra::geometry
+
+namespace umbra::geometry {
+namespace {
+
+TEST(SceneIo, SpecularAndShininess) {
+  const std::string glossy =
+      R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]},
+           "specular": [0.5, 0.25, 1], "shininess": 64}])";
+  const Scene s = parse_scene(scene("[]", glossy), kScenes / "s.json");
+  EXPECT_EQ(s.models[0].specular, (Rgb{0.5, 0.25, 1}));
+  EXPECT_EQ(s.models[0].shininess, 64);
+  const Scene plain = parse_scene(scene("[]"), kScenes / "s.json");
+  EXPECT_EQ(plain.models[0].specular, (Rgb{0, 0, 0}));
+  EXPECT_EQ(plain.models[0].shininess, 32);
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]],
+                                          "faces": [[0,1,2]]}, "shininess": 0.5}])")),
+            kFile + ": models[0].shininess: must be in [1, 10000]");
+}
+
+}  // namespace
+}  // namespace umbra::geometry
