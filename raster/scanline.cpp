@@ -433,7 +433,9 @@ class Band {
   /// Could this polygon change pixel p's answer if the pixel were on the other
   /// side of one of its edges? Not if it is clearly behind the visible point.
   bool matters(const ProjectedPolygon& polygon, int i, std::size_t p) const {
-    if (result_.visible[p] < 0) return true;
+    // Where nothing is seen a shadow polygon changes nothing (a surface
+    // whose edge passes close flags the pixel through its own edge strip).
+    if (result_.visible[p] < 0) return polygon.kind == RasterPolygon::Kind::surface;
     const Vec3& d = ray_[i];
     double t = polygon.depth(d);
     if (std::isnan(t)) return true;
