@@ -8,8 +8,9 @@
 //   translation of polygon and light together;
 // - for a polygon that is not twisted, projected_facing equals
 //   fan_orientation when the polygon is planar or the light directional;
-//   it is unchanged by cyclic rotation (the facing belongs to the projected
-//   boundary curve, not to the fan) and negated by reversal;
+//   it is unchanged by exact rescaling and translation; it is unchanged by
+//   cyclic rotation and negated by reversal when the surface is planar, the
+//   light directional, or no fan folds or wraps around the light (see below);
 // - folds_seen_from(reversed with v0 kept first, -facing) equals
 //   folds_seen_from(polygon, facing) (the same fan, turned over), and
 //   neither changes under exact rescaling.
@@ -127,11 +128,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                      "facing vs fan_orientation " + what);
   UMBRA_FUZZ_CHECK(kName, geometry::projected_facing(moved, moved_light) == facing,
                    "facing rescaled/translated " + what);
-  UMBRA_FUZZ_CHECK(kName, geometry::projected_facing(rotated, light) == facing, "facing rotated " + what);
-  UMBRA_FUZZ_CHECK(kName, geometry::projected_facing(reversed, light) == -facing,
-                   "facing reversed " + what);
   if (facing == Sign::zero) return 0;
   const bool folds = geometry::folds_seen_from(poly, light, facing);
+  // Rotation and reversal change the fan (its apex), hence the surface. The
+  // projected boundary is the same curve, but on the sphere of directions a
+  // closed curve bounds two regions, and which one a non-planar surface
+  // covers from a point light depends on the surface (the campaign found
+  // fans through L: twist/regressions are replayed). The facing belongs to
+  // the curve alone when the surface is planar, the light directional, or
+  // neither fan folds nor wraps around L (then both cover the same side).
+  const Sign rotated_facing = geometry::projected_facing(rotated, light);
+  const Sign reversed_facing = geometry::projected_facing(reversed, light);
+  const bool same_region =
+      shape == geometry::PolygonShape::planar || !finite ||
+      (!folds && !geometry::folds_seen_from(rotated, light, rotated_facing) &&
+       !geometry::folds_seen_from(reversed, light, reversed_facing));
+  if (same_region) {
+    UMBRA_FUZZ_CHECK(kName, rotated_facing == facing, "facing rotated " + what);
+    UMBRA_FUZZ_CHECK(kName, reversed_facing == -facing, "facing reversed " + what);
+  }
   UMBRA_FUZZ_CHECK(kName, geometry::folds_seen_from(turned, light, -facing) == folds,
                    "folds turned over " + what);
   UMBRA_FUZZ_CHECK(kName, geometry::folds_seen_from(moved, moved_light, facing) == folds,

@@ -34,7 +34,7 @@ if [ -n "$only" ]; then IFS=, read -r -a harnesses <<< "$only"; fi
 if [ ! -x "$build/fuzz/fuzz_${harnesses[0]}" ]; then
   CXX=clang++-14 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DUMBRA_FUZZ=ON -DUMBRA_BUILD_TESTS=OFF
-  cmake --build "$build" -j2
+  cmake --build "$build" -j2 --target $(printf 'fuzz_%s ' "${harnesses[@]}")
 fi
 
 slots=$(( ${#harnesses[@]} + 1 ))
@@ -75,7 +75,11 @@ for h in "${harnesses[@]}"; do
 done
 
 # The generator: batches of 200 scenes with fresh seeds until its share is used.
+# The generator needs no libFuzzer: any build's umbra will do.
 umbra="$build/cli/umbra"
+[ -x "$umbra" ] || umbra=build/cli/umbra
+[ -x "$umbra" ] || cmake --build "$build" -j2 --target umbra
+[ -x "$umbra" ] || umbra="$build/cli/umbra"
 scenes=0 failed=0 start=$(date +%s) s=$seed
 while [ $(( $(date +%s) - start )) -lt "$share" ]; do
   out=$("$umbra" fuzz check --count 200 --seed "$s" -q 2>&1) || true
