@@ -2,6 +2,7 @@
 // place where errors become messages and exit codes (docs/cli.md):
 // geometry::InputError -> "umbra: <what>" and 2; any other exception -> 3.
 #include <cli/exit_codes.h>
+#include <cli/fuzz_command.h>
 #include <cli/render_command.h>
 #include <cli/validate_command.h>
 #include <cli/volume_command.h>
@@ -27,6 +28,7 @@ constexpr const char* kFooter =
     "  umbra render data/scenes/default.json -o out/default.exr\n"
     "  umbra validate data/scenes/default.json --image out/default.exr\n"
     "  umbra volume data/scenes/default.json -o out/default.volume.ply\n"
+    "  umbra fuzz check --count 50 --seed 1\n"
     "\n"
     "Exit codes: 0 success, 1 validation found mismatches, 2 bad input or usage,\n"
     "3 internal error. Errors are one line on stderr; no partial output file is\n"
@@ -60,14 +62,16 @@ int main(int argc, char** argv) {
   RenderArgs render_args;
   ValidateArgs validate_args;
   VolumeArgs volume_args;
+  FuzzArgs fuzz_args;
   CLI::App* render = add_render_command(app, render_args);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
+  const auto [fuzz_check, fuzz_export] = add_fuzz_command(app, fuzz_args);
 
   // CLI11 reports an unknown verb as "A subcommand is required"; name it.
   if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != render->get_name() &&
-      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name()) {
-    fmt::print(stderr, "umbra: unknown command '{}'; commands: {}, {}, {} (see 'umbra --help')\n",
+      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name() && std::string(argv[1]) != "fuzz") {
+    fmt::print(stderr, "umbra: unknown command '{}'; commands: {}, {}, {}, fuzz (see 'umbra --help')\n",
                argv[1], render->get_name(), validate->get_name(), volume->get_name());
     return kExitBadInput;
   }
@@ -82,6 +86,8 @@ int main(int argc, char** argv) {
     if (render->parsed()) return run_render(render_args);
     if (validate->parsed()) return run_validate(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
+    if (fuzz_check->parsed()) return run_fuzz_check(fuzz_args);
+    if (fuzz_export->parsed()) return run_fuzz_export(fuzz_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;
   } catch (const umbra::geometry::InputError& e) {

@@ -15,3 +15,15 @@ if(UMBRA_SANITIZE)
     -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
   target_link_options(umbra_options INTERFACE -fsanitize=address,undefined)
 endif()
+
+# libFuzzer builds (fuzz/, docs/fuzzing.md): clang only. Every target gets
+# coverage instrumentation (fuzzer-no-link) and ASan+UBSan; the harness
+# executables alone link libFuzzer's main (fuzz/CMakeLists.txt).
+if(UMBRA_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "UMBRA_FUZZ=ON needs clang (libFuzzer): configure with -DCMAKE_CXX_COMPILER=clang++-14")
+  endif()
+  target_compile_options(umbra_options INTERFACE
+    -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
+  target_link_options(umbra_options INTERFACE -fsanitize=address,undefined)
+endif()

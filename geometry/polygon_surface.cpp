@@ -30,6 +30,12 @@ PolygonSurface polygon_surface(std::span<const Vec3> vertices, const Polygon& po
   for (std::uint32_t k = 1; k + 1 < n; ++k) {
     if (!collinear(at(0), at(k), at(k + 1))) surface.triangles.push_back({{0, k, k + 1}});
   }
+  // Three non-collinear vertices do not make a surface when every fan
+  // triangle has zero area (v0 repeated between the others: (a, b, a, c)).
+  // Such a polygon covers nothing, like a collinear one; callers rely on a
+  // planar or non-planar surface having a triangle (fuzz/regressions/render/
+  // planar-without-fan-triangle).
+  if (surface.triangles.empty()) surface.shape = PolygonShape::degenerate;
   return surface;
 }
 

@@ -8,7 +8,9 @@
 // ±1 to the winding number, so the parity of the triangles covering a point
 // is the parity of its winding number); for a non-planar polygon it is the
 // fan triangulation itself. Zero-area fan triangles are dropped: they cover
-// nothing. A polygon whose vertices are all collinear has no surface at all.
+// nothing. A polygon whose vertices are all collinear, or whose fan
+// triangles all have zero area (a vertex repeated: (a, b, a, c)), has no
+// surface at all: its shape is `degenerate`.
 #include <geometry/scene.h>
 
 #include <array>
@@ -19,7 +21,7 @@
 namespace umbra::geometry {
 
 enum class PolygonShape : std::uint8_t {
-  degenerate,  ///< all vertices on one line (or fewer than 3 distinct): no surface
+  degenerate,  ///< no fan triangle of nonzero area (e.g. all vertices on one line): no surface
   planar,      ///< all vertices on one plane (exact)
   non_planar,
 };

@@ -8,7 +8,8 @@ packages=(
   libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libfmt-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  assimp-testmodels libassimp-dev
+  assimp-testmodels libassimp-dev libcgal-demo
+  clang-14 libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do
