@@ -26,6 +26,8 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"pixels", stats.pixels},
       {"contour_edges", stats.contour_edges},
       {"shadow_polygons", stats.shadow_polygons},
+      {"surface_polygons", stats.surface_polygons},
+      {"spans", stats.spans},
       {"exact_fallback_pixels", stats.exact_fallback_pixels},
       {"twisted_polygons", stats.twisted_polygons},
       {"eye_degenerate_lights", stats.eye_degenerate_lights},

@@ -29,6 +29,8 @@ struct RenderStats {
   double seconds_decide = 0;
   std::uint64_t contour_edges = 0;
   std::uint64_t shadow_polygons = 0;
+  std::uint64_t surface_polygons = 0;  ///< drawn by the scanline (non-planar: per fan triangle)
+  std::uint64_t spans = 0;             ///< spans the scanline shaded
   std::uint64_t exact_fallback_pixels = 0;
   std::uint64_t twisted_polygons = 0;  ///< (light, polygon) pairs with an L-twist
   /// Lights whose volumes the eye lies on the boundary of: their pixels are

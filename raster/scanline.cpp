@@ -170,6 +170,8 @@ class Band {
         slot_(scene.polygons.size(), 0),
         flags_(scene.group_start) {}
 
+  std::uint64_t spans() const { return spans_; }
+
   void run(int row0, int row1) {
     const int width = scene_.camera.frame.width;
     ray_.resize(width);
@@ -263,7 +265,10 @@ class Band {
       if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
       const int i0 = clamp_column(std::ceil(crossings_[k].x - 0.5), width);
       const int i1 = clamp_column(std::ceil(crossings_[k + 1].x - 0.5), width);
-      if (i0 < i1) shade_span(i0, i1, j);
+      if (i0 < i1) {
+        shade_span(i0, i1, j);
+        ++spans_;
+      }
     }
     // Each polygon has an even number of active edges on a row, so every
     // toggle is undone by now; clear anyway so one bad row cannot leak.
@@ -462,6 +467,7 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
+  std::uint64_t spans_ = 0;                // spans shaded by this band
   std::vector<Crossing> crossings_;        // the active edge list, x-sorted
   std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
   std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
@@ -502,17 +508,21 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
       static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
   // Each row is computed from the shared read-only scene alone, so the split
   // into bands cannot change any value: results are identical for any count.
+  std::vector<std::uint64_t> spans(static_cast<std::size_t>(bands), 0);
   const auto run_band = [&](int b) {
     const int row0 = static_cast<int>(static_cast<long long>(frame.height) * b / bands);
     const int row1 = static_cast<int>(static_cast<long long>(frame.height) * (b + 1) / bands);
     detail::Band band(scene, result, progress);
     band.run(row0, row1);
+    spans[static_cast<std::size_t>(b)] = band.spans();
   };
   {
     std::vector<std::jthread> workers;
     for (int b = 1; b < bands; ++b) workers.emplace_back(run_band, b);
     run_band(0);
   }
+
+  for (const std::uint64_t n : spans) result.spans += n;
 
   // A polygon within near_radius of the eye may be met by sample rays at
   // z < z_near, which the clipping removed: nothing is certain then.

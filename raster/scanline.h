@@ -42,6 +42,7 @@ struct ScanlineResult {
   /// spans without a surface are skipped.
   std::vector<std::int32_t> count;
   std::vector<std::uint8_t> uncertain;
+  std::uint64_t spans = 0;  ///< spans shaded (those without a surface are skipped)
 };
 
 /// `group_start` holds every group's flag at the eye (0 or 1); polygons may

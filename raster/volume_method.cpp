@@ -102,6 +102,8 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   const ScanlineResult scan =
       scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow, &progress);
   stats.seconds_raster = seconds_since(start);
+  stats.surface_polygons = table.entries.size();
+  stats.spans = scan.spans;
 
   start = Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
