@@ -8,7 +8,9 @@
 // scripts/bench_table.py from the JSON output.
 #include <benchmark/benchmark.h>
 #include <raster/render.h>
+#include <raster/validate.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -47,6 +49,32 @@ std::vector<std::string> split(const char* text) {
   return out;
 }
 
+std::vector<std::pair<std::string, geometry::Scene>>& scenes() {
+  static std::vector<std::pair<std::string, geometry::Scene>> all;
+  return all;
+}
+
+/// Every benchmark scene rendered once more with shadows and checked against
+/// the oracle on 50,000 seeded pixels (UMBRA_BENCH_VALIDATE set).
+void validate_scenes() {
+  std::printf("\n| scene | compared | boundary | mismatches |\n| --- | --- | --- | --- |\n");
+  for (const auto& [name, scene] : scenes()) {
+    const raster::Frame frame = raster::render(scene, {.method = raster::Method::volume});
+    const raster::ValidationReport report =
+        raster::validate_render(scene, {frame.width, frame.height, frame.shadow},
+                                {.samples = 50000, .seed = 1, .threads = 0});
+    std::uint64_t compared = 0, boundary = 0;
+    for (const raster::LightReport& l : report.lights) {
+      compared += l.compared;
+      boundary += l.boundary;
+    }
+    std::printf("| %s | %llu | %llu | %llu |\n", name.c_str(),
+                static_cast<unsigned long long>(compared),
+                static_cast<unsigned long long>(boundary),
+                static_cast<unsigned long long>(report.total_mismatches()));
+  }
+}
+
 void register_benchmarks() {
   const std::string torus = std::string(UMBRA_DATA_DIR) + "/meshes/torus.off";
   for (const bool shadows : {true, false}) {
@@ -62,6 +90,7 @@ void register_benchmarks() {
     for (const int lights : {1, 4, 16}) {
       // Load once per (mesh, lights); both passes render the same scene.
       const geometry::Scene scene = mesh_on_floor(mesh, lights, 1280, 720);
+      scenes().emplace_back(stem + "/lights:" + std::to_string(lights), scene);
       for (const bool shadows : {true, false}) {
         benchmark::RegisterBenchmark(
             ("Render/" + stem + "/lights:" + std::to_string(lights) + "/" +
@@ -86,5 +115,6 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
+  if (std::getenv("UMBRA_BENCH_VALIDATE") != nullptr) umbra::bench::validate_scenes();
   return 0;
 }
