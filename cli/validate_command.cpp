@@ -1,6 +1,7 @@
 #include <cli/exit_codes.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
+#include <cli/progress_bar.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include <raster/validate.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -82,6 +84,9 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
       ->check(thread_count())
       ->type_name("N");
   cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
+  cmd->add_option("--stats-json", args.stats_json,
+                  "Write the report and timings per phase as JSON to FILE ('-' = stdout)")
+      ->type_name("FILE");
   cmd->footer(
       "Example:\n"
       "  umbra render data/scenes/default.json -o out/default.exr\n"
@@ -96,28 +101,51 @@ int run_validate(const ValidateArgs& args) {
                             ? image.parent_path() / (image.stem().string() + ".mismatches.png")
                             : fs::path(args.mask);
   check_output_path(mask, {".png"});
+  if (!args.stats_json.empty() && args.stats_json != "-") check_output_path(args.stats_json, {});
+  const auto start = std::chrono::steady_clock::now();
+  auto phase = start;
+  const auto lap = [&phase] {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - phase).count();
+    phase = now;
+    return s;
+  };
 
   const geometry::Scene scene = geometry::load_scene(args.scene);
+  const double seconds_load = lap();
   const raster::ShadowChannels channels = raster::read_shadow_channels(image);
+  const double seconds_read = lap();
   raster::ValidateOptions options;
   if (args.samples > 0) options.samples = args.samples;
   options.seed = args.seed;
   options.threads = args.threads;
+  ProgressBar bar(!args.quiet && !args.json && args.stats_json != "-");
+  options.progress = bar.callback();
   const raster::ValidationReport report = raster::validate_render(scene, channels, options);
+  bar.finish();
+  const double seconds_validate = lap();
 
   raster::write_rgb_png(mask, report.width, report.height, mask_colours(report));
+  const double seconds_write = lap();
 
-  if (args.json) {
-    ValidateRun run;
-    run.scene = args.scene;
-    run.image = args.image;
-    run.mask = mask.string();
-    run.samples = args.samples;
-    run.seed = args.seed;
-    emit_json(validation_json(run, report), "-");
-  } else if (!args.quiet) {
-    print_summary(args, mask, report);
+  ValidateRun run;
+  run.scene = args.scene;
+  run.image = args.image;
+  run.mask = mask.string();
+  run.samples = args.samples;
+  run.seed = args.seed;
+  if (args.json) emit_json(validation_json(run, report), "-");
+  if (!args.stats_json.empty()) {
+    nlohmann::ordered_json j = validation_json(run, report);
+    j["seconds"] = {
+        {"load", seconds_load},
+        {"read", seconds_read},
+        {"validate", seconds_validate},
+        {"write", seconds_write},
+        {"total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+    emit_json(j, args.stats_json);
   }
+  if (!args.json && !args.quiet) print_summary(args, mask, report);
   return report.total_mismatches() > 0 ? kExitMismatches : kExitSuccess;
 }
 

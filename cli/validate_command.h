@@ -16,6 +16,7 @@ struct ValidateArgs {
   std::string mask;  ///< empty: <image stem>.mismatches.png beside the image
   unsigned threads = 0;
   bool quiet = false;
+  std::string stats_json;  ///< empty: none; "-": stdout (the report plus timings)
 };
 
 /// Adds the `validate` subcommand to `app`, parsing into `args`.

@@ -35,12 +35,14 @@ std::string faces_per_light(const VolumeCounts& counts) {
 
 CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
   CLI::App* cmd = app.add_subcommand("volume", "Export every light's shadow volume");
-  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
                   "Output mesh: .ply (attributes as face properties), .obj/.off (attributes "
                   "in the sidecar OUT.json) or .gltf/.glb (float32 positions; attributes as "
-                  "per-vertex _FACE, _LIGHT, ... on each face's own vertices)")
-      ->required()
+                  "per-vertex _FACE, _LIGHT, ... on each face's own vertices); default "
+                  "<scene stem>.ply in the current directory")
       ->type_name("OUT");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write counts per light and timings as JSON to FILE ('-' = stdout)")
@@ -58,7 +60,9 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
 int run_volume(const VolumeArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   const fs::path scene_path = args.scene;
-  const fs::path output = args.output;
+  const fs::path output = args.output.empty()
+                              ? fs::path(fs::path(args.scene).stem().string() + ".ply")
+                              : fs::path(args.output);
   const bool stats_to_stdout = args.stats_json == "-";
 
   // Cheap checks first: nothing is built for an output that cannot be written.

@@ -92,6 +92,8 @@ ValidationReport validate_render(const geometry::Scene& scene, const ShadowChann
   constexpr int kChunk = 256;
   const int chunks = static_cast<int>((pixels.size() + kChunk - 1) / kChunk);
   std::mutex merge;
+  Progress progress(options.progress);
+  progress.phase("validate", static_cast<std::uint64_t>(chunks));
   parallel_rows(chunks, options.threads, [&](int c) {
     std::vector<LightReport> local(scene.lights.size());
     std::uint64_t background = 0;
@@ -132,6 +134,7 @@ ValidationReport validate_render(const geometry::Scene& scene, const ShadowChann
       }
       report.mask[p] = mark;
     }
+    progress.advance();
     const std::lock_guard lock(merge);
     report.background += background;
     for (std::size_t l = 0; l < local.size(); ++l) {

@@ -2,6 +2,7 @@
 // Compares a render's shadow.<i> AOVs with the exact oracle.
 #include <geometry/scene.h>
 #include <raster/image_io.h>
+#include <raster/progress.h>
 
 #include <cstdint>
 #include <optional>
@@ -14,6 +15,7 @@ struct ValidateOptions {
   std::optional<std::uint64_t> samples;
   std::uint64_t seed = 1;
   unsigned threads = 0;
+  ProgressCallback progress{};  ///< told the fraction of pixels checked
 };
 
 struct LightReport {

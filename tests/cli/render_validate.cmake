@@ -26,7 +26,9 @@ if(NOT code EQUAL 0 OR NOT EXISTS "${exr}")
   message(FATAL_ERROR "render exited ${code}\n${out}\n${err}")
 endif()
 
+set(stats "${WORK_DIR}/validate.json")
 execute_process(COMMAND "${UMBRA}" validate "${SCENE}" --image "${exr}" --mask "${mask}" --json
+  --stats-json "${stats}"
   RESULT_VARIABLE code OUTPUT_VARIABLE report ERROR_VARIABLE err)
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "validate exited ${code}\n${report}\n${err}")
@@ -35,6 +37,13 @@ if(NOT EXISTS "${mask}")
   message(FATAL_ERROR "validate wrote no mask at ${mask}")
 endif()
 
+# --stats-json holds the same report plus the time of every phase.
+file(READ "${stats}" stats_text)
+string(JSON stats_mismatches GET "${stats_text}" total_mismatches)
+string(JSON seconds_validate GET "${stats_text}" seconds validate)
+if(NOT stats_mismatches EQUAL 0 OR seconds_validate LESS 0)
+  message(FATAL_ERROR "--stats-json disagrees with --json:\n${stats_text}")
+endif()
 string(JSON width GET "${report}" width)
 string(JSON height GET "${report}" height)
 string(JSON checked GET "${report}" pixels_checked)
