@@ -13,27 +13,15 @@
 #include <string>
 #include <vector>
 
+#include "input_error_matchers.h"
+
 namespace umbra::geometry {
 namespace {
 
 const std::filesystem::path kData = UMBRA_TEST_DATA_DIR "/meshes";
 
-// The message of the InputError `f` throws ("" and a failure if none).
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
-::testing::AssertionResult starts_with(const std::string& text, const std::string& prefix) {
-  if (text.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not start with '" << prefix << "'";
-}
+using test::error_of;
+using test::starts_with;
 
 ::testing::AssertionResult contains(const std::string& text, const std::string& part) {
   if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
@@ -476,8 +464,9 @@ TEST(MeshIo, DirectoryIsAnError) {
 }
 
 TEST(MeshIo, UnknownExtensionIsAnError) {
-  EXPECT_EQ(error_of_text("v 0 0 0", "mesh.txt"),
-            "mesh.txt: unknown mesh extension '.txt'; expected .off, .obj, .ply, .stl, .gltf or .glb");
+  EXPECT_EQ(
+      error_of_text("v 0 0 0", "mesh.txt"),
+      "mesh.txt: unknown mesh extension '.txt'; expected .off, .obj, .ply, .stl, .gltf or .glb");
   EXPECT_TRUE(starts_with(error_of_text("", "noext"), "noext: unknown mesh extension ''"));
 }
 

@@ -7,26 +7,15 @@
 #include <filesystem>
 #include <string>
 
+#include "input_error_matchers.h"
+
 namespace umbra::geometry {
 namespace {
 
 const std::filesystem::path kScenes = UMBRA_TEST_DATA_DIR "/scenes";
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
-::testing::AssertionResult starts_with(const std::string& text, const std::string& prefix) {
-  if (text.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not start with '" << prefix << "'";
-}
+using test::error_of;
+using test::starts_with;
 
 const char* const kCamera = R"("camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]})";
 const char* const kTriangle =
