@@ -1,13 +1,11 @@
 #include <cli/output_files.h>
 #include <fmt/format.h>
+#include <geometry/atomic_files.h>
 #include <geometry/input_error.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <random>
 #include <system_error>
 
 namespace umbra::cli {
@@ -44,29 +42,7 @@ void check_output_path(const fs::path& path, std::initializer_list<std::string_v
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {
-  static thread_local std::mt19937_64 rng{std::random_device{}()};
-  const fs::path tmp = path.parent_path() / fmt::format(".{}.tmp-{:016x}{}", path.stem().string(),
-                                                        rng(), path.extension().string());
-  std::string error;
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) error = std::strerror(errno);
-    if (error.empty()) {
-      out << text;
-      out.flush();
-      if (!out) error = std::strerror(errno);
-    }
-  }
-  if (error.empty()) {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) error = ec.message();
-  }
-  if (!error.empty()) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw InputError(path.string(), "cannot write file: " + error);
-  }
+  geometry::write_all_or_nothing({{path, text}});
 }
 
 }  // namespace umbra::cli

@@ -12,6 +12,7 @@
 // reader included, with its custom properties — without warnings, dropped
 // faces or duplicated vertices.
 #include <fmt/format.h>
+#include <geometry/atomic_files.h>
 #include <geometry/input_error.h>
 #include <geometry/mesh_reader_util.h>
 #include <geometry/volume_export.h>
@@ -22,16 +23,13 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -307,44 +305,6 @@ std::string sidecar_text(const ShadowVolumes& volumes, const fs::path& mesh) {
   return out;
 }
 
-// --- Atomic files ------------------------------------------------------------
-
-/// `.NAME.tmp-XXXXXXXXXXXXXXXX.EXT` beside `path`, as cli/output_files.cpp
-/// and raster/image_io.cpp name theirs: same directory, so the rename is
-/// atomic; hidden, so a listing during the write does not show it.
-fs::path temporary_beside(const fs::path& path) {
-  static thread_local std::mt19937_64 rng{std::random_device{}()};
-  return path.parent_path() /
-         fmt::format(".{}.tmp-{:016x}{}", path.stem().string(), rng(), path.extension().string());
-}
-
-/// Writes every (path, bytes) pair to a temporary beside its path, then
-/// renames all of them; on any failure removes the temporaries and whatever
-/// was already renamed, and throws InputError naming the failing path.
-void write_all_or_nothing(const std::vector<std::pair<fs::path, std::string>>& files) {
-  std::vector<fs::path> temporaries;
-  const auto fail = [&](const fs::path& path, const std::string& why, std::size_t renamed) {
-    std::error_code ignored;
-    for (const fs::path& tmp : temporaries) fs::remove(tmp, ignored);
-    for (std::size_t i = 0; i < renamed; ++i) fs::remove(files[i].first, ignored);
-    throw InputError(path.string(), "cannot write file: " + why);
-  };
-  for (const auto& [path, bytes] : files) {
-    const fs::path tmp = temporary_beside(path);
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) fail(path, std::strerror(errno), 0);
-    temporaries.push_back(tmp);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) fail(path, std::strerror(errno), 0);
-  }
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    std::error_code ec;
-    fs::rename(temporaries[i], files[i].first, ec);
-    if (ec) fail(files[i].first, ec.message(), i);
-  }
-}
-
 }  // namespace
 
 std::optional<fs::path> volume_sidecar_path(const fs::path& path) {
@@ -362,7 +322,8 @@ void write_volumes(const ShadowVolumes& volumes, const fs::path& path) {
     // Faces share no vertices in glTF (each carries its own attributes), so
     // the halfedge indexing below is not needed; its checks are.
     for (std::size_t i = 0; i < volumes.polygons.size(); ++i) check_polygon(volumes.polygons[i], i);
-    files.emplace_back(path, detail::gltf_volume_bytes(volumes, format == Format::glb, path.string()));
+    files.emplace_back(path,
+                       detail::gltf_volume_bytes(volumes, format == Format::glb, path.string()));
     write_all_or_nothing(files);
     return;
   }

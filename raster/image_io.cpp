@@ -1,5 +1,6 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
+#include <geometry/atomic_files.h>
 #include <geometry/input_error.h>
 #include <raster/image_io.h>
 #include <raster/shading.h>
@@ -10,7 +11,6 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -47,17 +47,6 @@ std::uint8_t quantize(float v) {
   return static_cast<std::uint8_t>(std::lround(v * 255.0f));
 }
 
-/// `.NAME.tmp-XXXXXXXX.ext` beside `target`: same directory (so the rename
-/// is atomic on one file system) and same extension (so OpenImageIO picks
-/// the same format). Hidden, so a directory listing during a long write does
-/// not show it as a result.
-fs::path temporary_beside(const fs::path& target) {
-  static thread_local std::mt19937_64 rng{std::random_device{}()};
-  const std::string name =
-      fmt::format(".{}.tmp-{:016x}{}", target.stem().string(), rng(), target.extension().string());
-  return target.parent_path() / name;
-}
-
 /// Records the first failure: OpenImageIO's text, or a placeholder when it
 /// gave none.
 void note_failure(bool ok, std::string& error, const std::string& what) {
@@ -68,7 +57,7 @@ void note_failure(bool ok, std::string& error, const std::string& what) {
 /// a temporary file beside `path`, then renames it onto `path`. On any
 /// failure the temporary file is removed and an InputError names `path`.
 void write_atomically(const fs::path& path, const OIIO::ImageSpec& spec, const void* pixels) {
-  const fs::path tmp = temporary_beside(path);
+  const fs::path tmp = geometry::temporary_beside(path);
   std::string error;
   {
     auto out = OIIO::ImageOutput::create(tmp.string());
