@@ -15,8 +15,8 @@
 #include <geometry/gltf_io.h>
 #include <geometry/input_error.h>
 #include <geometry/mesh_reader_util.h>
+#include <geometry/position_welder.h>
 #include <geometry/sample_ray.h>
-
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -94,25 +94,6 @@ T load_le(const unsigned char* p) {
   std::memcpy(&value, bytes.data(), sizeof(T));
   return value;
 }
-
-/// Shares bit-identical positions (so 0.0 and -0.0 stay apart), in order of first use.
-class Welder {
- public:
-  explicit Welder(std::vector<Vec3>& vertices) : vertices_(vertices) {}
-  std::uint32_t add(const Vec3& p) {
-    const std::array<std::uint64_t, 3> key{std::bit_cast<std::uint64_t>(p.x),
-                                           std::bit_cast<std::uint64_t>(p.y),
-                                           std::bit_cast<std::uint64_t>(p.z)};
-    const auto [it, inserted] =
-        index_.try_emplace(key, static_cast<std::uint32_t>(vertices_.size()));
-    if (inserted) vertices_.push_back(p);
-    return it->second;
-  }
-
- private:
-  std::vector<Vec3>& vertices_;
-  std::map<std::array<std::uint64_t, 3>, std::uint32_t> index_;
-};
 
 std::string item(const std::string& path, std::size_t index) {
   return path + "[" + std::to_string(index) + "]";
@@ -214,7 +195,8 @@ class GltfReader {
         if (!soup) continue;
         Instance instance;
         instance.name = (node.name.empty() ? "node" + std::to_string(node_index) : node.name) +
-                        "/" + (mesh.name.empty() ? "mesh" + std::to_string(mesh_index) : mesh.name) +
+                        "/" +
+                        (mesh.name.empty() ? "mesh" + std::to_string(mesh_index) : mesh.name) +
                         "/" + std::to_string(p);
         instance.soup = std::move(*soup);
         instance.color = color_of(mesh.primitives[p], prim_path);
@@ -233,8 +215,8 @@ class GltfReader {
       if (node.camera < 0) return;
       if (static_cast<std::size_t>(node.camera) >= model_.cameras.size())
         fail(item("nodes", node_index) + ".camera",
-             "camera " + std::to_string(node.camera) + " out of range: " +
-                 std::to_string(model_.cameras.size()) + " cameras");
+             "camera " + std::to_string(node.camera) +
+                 " out of range: " + std::to_string(model_.cameras.size()) + " cameras");
       placed.try_emplace(static_cast<std::size_t>(node.camera), world);
     });
     for (const auto& [index, world] : placed) {
@@ -242,8 +224,9 @@ class GltfReader {
       if (gltf.type != "perspective") continue;
       return make_camera(gltf, item("cameras", index), world);
     }
-    fail("cameras", "no node of the scene instances a perspective camera; umbra renders through "
-                    "the first one");
+    fail("cameras",
+         "no node of the scene instances a perspective camera; umbra renders through "
+         "the first one");
   }
 
   std::vector<Light> lights() const {
@@ -269,13 +252,12 @@ class GltfReader {
       const auto it = node.extensions.find("KHR_lights_punctual");
       if (it == node.extensions.end()) return;
       const std::string path = item("nodes", node_index) + ".extensions.KHR_lights_punctual";
-      if (!it->second.IsObject() || !it->second.Has("light") ||
-          !it->second.Get("light").IsInt())
+      if (!it->second.IsObject() || !it->second.Has("light") || !it->second.Get("light").IsInt())
         fail(path, "expected an object with an integer 'light'");
       const int index = it->second.Get("light").GetNumberAsInt();
       if (index < 0 || static_cast<std::size_t>(index) >= lights.size())
-        fail(path + ".light", "light " + std::to_string(index) + " out of range: " +
-                                  std::to_string(lights.size()) + " lights");
+        fail(path + ".light", "light " + std::to_string(index) +
+                                  " out of range: " + std::to_string(lights.size()) + " lights");
       const auto l = static_cast<std::size_t>(index);
       if (placed_by[l] >= 0)
         fail(path + ".light", "light " + std::to_string(index) + " is already placed by nodes[" +
@@ -285,8 +267,7 @@ class GltfReader {
       Light& light = lights[l];
       if (light.type == LightType::point) {
         light.position = transform_point(world, {0, 0, 0});
-        if (!is_finite(light.position))
-          fail(path, "the light's world position is not finite");
+        if (!is_finite(light.position)) fail(path, "the light's world position is not finite");
       } else {
         light.direction = transform_direction(world, {0, 0, -1});
         if (!is_finite(light.direction) || light.direction == Vec3{0, 0, 0})
@@ -295,8 +276,9 @@ class GltfReader {
     });
     for (std::size_t l = 0; l < lights.size(); ++l)
       if (placed_by[l] < 0)
-        fail(item(lights_path, l), "no node of the scene places this light; umbra needs each "
-                                   "light once (its index is its AOV index)");
+        fail(item(lights_path, l),
+             "no node of the scene places this light; umbra needs each "
+             "light once (its index is its AOV index)");
     return lights;
   }
 
@@ -304,10 +286,9 @@ class GltfReader {
   void parse(std::string_view bytes) {
     tinygltf::TinyGLTF loader;
     // Images are never needed: accept them unread.
-    loader.SetImageLoader(
-        [](tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
-           int, void*) { return true; },
-        nullptr);
+    loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                             const unsigned char*, int, void*) { return true; },
+                          nullptr);
     // Plain file access: no shell-style path expansion, and external files
     // only from the glTF file's own folder (tinygltf would also try the
     // current directory).
@@ -354,8 +335,8 @@ class GltfReader {
   /// The GLB header and chunk headers, checked before tinygltf reads them.
   void check_glb_container(std::string_view bytes) const {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    if (bytes.size() < 20) fail("", "GLB file too short for its header: " +
-                                        std::to_string(bytes.size()) + " bytes");
+    if (bytes.size() < 20)
+      fail("", "GLB file too short for its header: " + std::to_string(bytes.size()) + " bytes");
     const auto version = load_le<std::uint32_t>(data + 4);
     const auto length = load_le<std::uint32_t>(data + 8);
     if (version != 2) fail("", "GLB version " + std::to_string(version) + "; expected 2");
@@ -398,8 +379,8 @@ class GltfReader {
       std::size_t scene = 0;
       if (model_.defaultScene >= 0) {
         if (static_cast<std::size_t>(model_.defaultScene) >= model_.scenes.size())
-          fail("scene", "scene " + std::to_string(model_.defaultScene) + " out of range: " +
-                            std::to_string(model_.scenes.size()) + " scenes");
+          fail("scene", "scene " + std::to_string(model_.defaultScene) +
+                            " out of range: " + std::to_string(model_.scenes.size()) + " scenes");
         scene = static_cast<std::size_t>(model_.defaultScene);
       }
       return {model_.scenes[scene].nodes, item("scenes", scene) + ".nodes"};
@@ -418,8 +399,8 @@ class GltfReader {
 
   std::size_t node_index(int index, const std::string& path) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
-      fail(path, "node " + std::to_string(index) + " out of range: " +
-                     std::to_string(model_.nodes.size()) + " nodes");
+      fail(path, "node " + std::to_string(index) +
+                     " out of range: " + std::to_string(model_.nodes.size()) + " nodes");
     return static_cast<std::size_t>(index);
   }
 
@@ -432,8 +413,8 @@ class GltfReader {
   Matrix local_matrix(const tinygltf::Node& node, const std::string& path) const {
     const auto check_size = [&](const std::vector<double>& v, const char* field, std::size_t n) {
       if (!v.empty() && v.size() != n)
-        fail(path + "." + field, "expected " + std::to_string(n) + " numbers, found " +
-                                     std::to_string(v.size()));
+        fail(path + "." + field,
+             "expected " + std::to_string(n) + " numbers, found " + std::to_string(v.size()));
       check_finite(v, path + "." + field);
     };
     check_size(node.matrix, "matrix", 16);
@@ -457,16 +438,28 @@ class GltfReader {
       const double n = x * x + y * y + z * z + w * w;
       if (n == 0) fail(path + ".rotation", "the zero quaternion is no rotation");
       const double s = 2 / n;
-      m = {1 - s * (y * y + z * z), s * (x * y + z * w), s * (x * z - y * w), 0,
-           s * (x * y - z * w), 1 - s * (x * x + z * z), s * (y * z + x * w), 0,
-           s * (x * z + y * w), s * (y * z - x * w), 1 - s * (x * x + y * y), 0,
-           0, 0, 0, 1};
+      m = {1 - s * (y * y + z * z),
+           s * (x * y + z * w),
+           s * (x * z - y * w),
+           0,
+           s * (x * y - z * w),
+           1 - s * (x * x + z * z),
+           s * (y * z + x * w),
+           0,
+           s * (x * z + y * w),
+           s * (y * z - x * w),
+           1 - s * (x * x + y * y),
+           0,
+           0,
+           0,
+           0,
+           1};
     }
     if (!node.scale.empty())
       for (int col = 0; col < 3; ++col)
         for (int row = 0; row < 3; ++row)
-          m[static_cast<std::size_t>(4 * col + row)] =
-              m[static_cast<std::size_t>(4 * col + row)] * node.scale[static_cast<std::size_t>(col)];
+          m[static_cast<std::size_t>(4 * col + row)] = m[static_cast<std::size_t>(4 * col + row)] *
+                                                       node.scale[static_cast<std::size_t>(col)];
     if (!node.translation.empty())
       for (int row = 0; row < 3; ++row)
         m[static_cast<std::size_t>(12 + row)] = node.translation[static_cast<std::size_t>(row)];
@@ -478,8 +471,8 @@ class GltfReader {
   AccessorData accessor(int index, const std::string& path, int type,
                         std::initializer_list<int> components, const char* expected) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
-      fail(path, "accessor " + std::to_string(index) + " out of range: " +
-                     std::to_string(model_.accessors.size()) + " accessors");
+      fail(path, "accessor " + std::to_string(index) +
+                     " out of range: " + std::to_string(model_.accessors.size()) + " accessors");
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
     AccessorData data;
     data.path = item("accessors", static_cast<std::size_t>(index));
@@ -491,14 +484,13 @@ class GltfReader {
     if (a.count == 0) fail(data.path + ".count", "must be at least 1");
     data.count = a.count;
     data.component_type = a.componentType;
-    const std::size_t element =
-        component_size(a.componentType) * static_cast<std::size_t>(type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
+    const std::size_t element = component_size(a.componentType) *
+                                static_cast<std::size_t>(type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
     if (a.bufferView < 0) return data;  // no buffer view: every element is zero
     if (static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size())
-      fail(data.path + ".bufferView", "buffer view " + std::to_string(a.bufferView) +
-                                          " out of range: " +
-                                          std::to_string(model_.bufferViews.size()) +
-                                          " buffer views");
+      fail(data.path + ".bufferView",
+           "buffer view " + std::to_string(a.bufferView) +
+               " out of range: " + std::to_string(model_.bufferViews.size()) + " buffer views");
     const std::string view_path = item("bufferViews", static_cast<std::size_t>(a.bufferView));
     const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
     if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size())
@@ -550,18 +542,24 @@ class GltfReader {
 
   std::vector<std::uint32_t> indices(int index, const std::string& path,
                                      std::size_t vertex_count) const {
-    const AccessorData data = accessor(
-        index, path, TINYGLTF_TYPE_SCALAR,
-        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-        "an unsigned byte, unsigned short or unsigned int SCALAR accessor");
+    const AccessorData data =
+        accessor(index, path, TINYGLTF_TYPE_SCALAR,
+                 {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                 "an unsigned byte, unsigned short or unsigned int SCALAR accessor");
     std::vector<std::uint32_t> out(data.count, 0);
     for (std::size_t i = 0; data.base != nullptr && i < data.count; ++i) {
       const unsigned char* p = data.base + i * data.stride;
       switch (data.component_type) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = *p; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: out[i] = load_le<std::uint16_t>(p); break;
-        default: out[i] = load_le<std::uint32_t>(p); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+          out[i] = *p;
+          break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+          out[i] = load_le<std::uint16_t>(p);
+          break;
+        default:
+          out[i] = load_le<std::uint32_t>(p);
+          break;
       }
     }
     for (std::size_t i = 0; i < out.size(); ++i)
@@ -594,7 +592,8 @@ class GltfReader {
       order.resize(local.size());
       for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
     }
-    const std::string count_at = prim.indices >= 0 ? path + ".indices" : path + ".attributes.POSITION";
+    const std::string count_at =
+        prim.indices >= 0 ? path + ".indices" : path + ".attributes.POSITION";
     if (mode == TINYGLTF_MODE_TRIANGLES && order.size() % 3 != 0)
       fail(count_at, std::to_string(order.size()) + " vertices do not make whole triangles");
     if (mode != TINYGLTF_MODE_TRIANGLES && order.size() < 3)
@@ -616,7 +615,7 @@ class GltfReader {
     // World positions, bit-identical ones welded so that adjacency is found
     // where an exporter split vertices for normals or texture coordinates.
     PolygonSoup soup;
-    Welder welder(soup.vertices);
+    PositionWelder welder(soup.vertices);
     std::vector<std::uint32_t> remap(local.size(), 0);
     for (std::size_t i = 0; i < local.size(); ++i) {
       const Vec3 p = transform_point(world, local[i]);
@@ -644,7 +643,8 @@ class GltfReader {
                                        .pbrMetallicRoughness.baseColorFactor;
     if (f.size() != 4) fail(factor_path, "expected 4 numbers, found " + std::to_string(f.size()));
     for (std::size_t i = 0; i < 3; ++i)
-      if (!std::isfinite(f[i]) || f[i] < 0) fail(item(factor_path, i), "must be a finite number >= 0");
+      if (!std::isfinite(f[i]) || f[i] < 0)
+        fail(item(factor_path, i), "must be a finite number >= 0");
     return {f[0], f[1], f[2]};
   }
 
@@ -670,15 +670,17 @@ class GltfReader {
     } else if (type == "directional") {
       light.type = LightType::directional;
     } else if (type == "spot") {
-      fail(path + ".type", "spot lights are not supported (umbra's lights are point and "
-                           "directional; a spot's cone would change the shadows)");
+      fail(path + ".type",
+           "spot lights are not supported (umbra's lights are point and "
+           "directional; a spot's cone would change the shadows)");
     } else {
       fail(path + ".type", "unknown light type '" + type + "'; expected point or directional");
     }
     Rgb color{1, 1, 1};
     if (v.Has("color")) {
       const tinygltf::Value& c = v.Get("color");
-      if (!c.IsArray() || c.ArrayLen() != 3) fail(path + ".color", "expected an array of 3 numbers");
+      if (!c.IsArray() || c.ArrayLen() != 3)
+        fail(path + ".color", "expected an array of 3 numbers");
       std::array<double, 3> rgb{};
       for (std::size_t i = 0; i < 3; ++i) {
         const tinygltf::Value& x = c.Get(static_cast<int>(i));
@@ -752,7 +754,8 @@ class GltfReader {
       if (!umbra.IsObject()) fail(umbra_path, "expected an object");
       for (const std::string& key : umbra.Keys()) {
         if (key != "width" && key != "height")
-          fail(umbra_path + "." + key, "unknown field '" + key + "'; expected one of width, height");
+          fail(umbra_path + "." + key,
+               "unknown field '" + key + "'; expected one of width, height");
         const tinygltf::Value& n = umbra.Get(key);
         if (!n.IsInt() || n.GetNumberAsInt() < 1 || n.GetNumberAsInt() > 16384)
           fail(umbra_path + "." + key, "must be an integer in [1, 16384]");
@@ -768,8 +771,9 @@ class GltfReader {
     if (!is_finite(camera.eye) || !is_finite(camera.look_at) || camera.look_at == camera.eye ||
         cross(camera.look_at - camera.eye, camera.up) == Vec3{0, 0, 0} || !is_finite(frame.f) ||
         !is_finite(frame.r) || !is_finite(frame.u) || frame.r == Vec3{0, 0, 0})
-      fail(path, "the node placing this camera gives no usable view (degenerate or non-finite "
-                 "world matrix)");
+      fail(path,
+           "the node placing this camera gives no usable view (degenerate or non-finite "
+           "world matrix)");
     return camera;
   }
 
@@ -808,7 +812,7 @@ Scene parse_gltf_scene(std::string_view bytes, const fs::path& file) {
 PolygonSoup parse_gltf_polygon_soup(std::string_view bytes, const fs::path& file) {
   const GltfReader reader(bytes, file);
   PolygonSoup soup;
-  Welder welder(soup.vertices);
+  PositionWelder welder(soup.vertices);
   for (const GltfReader::Instance& instance : reader.instances()) {
     std::vector<std::uint32_t> remap;
     for (const Vec3& p : instance.soup.vertices) remap.push_back(welder.add(p));

@@ -14,42 +14,16 @@
 // between facets only when their three coordinates are bit-identical (so +0
 // and -0 stay apart), which is what lets adjacency be found downstream.
 #include <geometry/mesh_reader_util.h>
+#include <geometry/position_welder.h>
 
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
 
 namespace umbra::geometry::detail {
 namespace {
-
-// Shares a vertex among facets when its bits are identical.
-class VertexMerger {
- public:
-  explicit VertexMerger(PolygonSoup& soup) : soup_(soup) {}
-  std::uint32_t index_of(const Vec3& p) {
-    const Key key{std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y),
-                  std::bit_cast<std::uint64_t>(p.z)};
-    const auto [it, inserted] =
-        indices_.try_emplace(key, static_cast<std::uint32_t>(soup_.vertices.size()));
-    if (inserted) soup_.vertices.push_back(p);
-    return it->second;
-  }
-
- private:
-  using Key = std::array<std::uint64_t, 3>;
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      std::uint64_t h = 0xcbf29ce484222325ull;
-      for (std::uint64_t part : k) h = (h ^ part) * 0x100000001b3ull ^ (h >> 29);
-      return static_cast<std::size_t>(h);
-    }
-  };
-  PolygonSoup& soup_;
-  std::unordered_map<Key, std::uint32_t, KeyHash> indices_;
-};
 
 std::uint32_t read_u32_le(const char* p) {
   const auto* b = reinterpret_cast<const unsigned char*>(p);
@@ -62,7 +36,7 @@ float read_f32_le(const char* p) { return std::bit_cast<float>(read_u32_le(p)); 
 PolygonSoup parse_binary(std::string_view bytes, std::uint32_t count, const std::string& name) {
   PolygonSoup soup;
   soup.polygons.reserve(count);  // the size rule has proven the file holds them
-  VertexMerger merger(soup);
+  PositionWelder merger(soup.vertices);
   for (std::uint32_t t = 0; t < count; ++t) {
     const std::size_t facet = 84 + 50 * static_cast<std::size_t>(t);
     Polygon polygon;
@@ -78,7 +52,7 @@ PolygonSoup parse_binary(std::string_view bytes, std::uint32_t count, const std:
                            "coordinate is not finite (triangle " + std::to_string(t) + ")");
         }
       }
-      polygon.push_back(merger.index_of(p));
+      polygon.push_back(merger.add(p));
     }
     soup.polygons.push_back(std::move(polygon));
   }
@@ -91,7 +65,7 @@ bool keyword_is(std::string_view token, std::string_view keyword) {
 
 PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
   PolygonSoup soup;
-  VertexMerger merger(soup);
+  PositionWelder merger(soup.vertices);
   TextCursor cursor(bytes);
   std::string_view token;
   auto expect = [&](std::string_view keyword) {
@@ -149,7 +123,7 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
         p.x = number(true);
         p.y = number(true);
         p.z = number(true);
-        polygon.push_back(merger.index_of(p));
+        polygon.push_back(merger.add(p));
       }
       if (polygon.size() < 3) {
         throw InputError(at_line(name, facet_line), "facet has " + std::to_string(polygon.size()) +

@@ -15,6 +15,7 @@
 #include <geometry/atomic_files.h>
 #include <geometry/input_error.h>
 #include <geometry/mesh_reader_util.h>
+#include <geometry/position_welder.h>
 #include <geometry/volume_export.h>
 #include <geometry/volume_export_gltf.h>
 
@@ -34,6 +35,7 @@
 #include <string>
 #include <system_error>
 #include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -99,7 +101,7 @@ IndexedFaces index_faces(const ShadowVolumes& volumes) {
   Mesh mesh;
   IndexedFaces result;
   result.faces.reserve(volumes.polygons.size());
-  std::map<std::array<std::uint64_t, 3>, std::uint32_t> shared;
+  std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> shared;
   const auto new_vertex = [&](const Vec3& p) {
     mesh.add_vertex(Mesh::Point(0, 0, 0));  // connectivity only
     result.vertices.push_back(p);
@@ -113,10 +115,7 @@ IndexedFaces index_faces(const ShadowVolumes& volumes) {
     check_polygon(polygon, i);
     std::vector<std::uint32_t> face;
     for (const Vec3& p : polygon.vertices) {
-      const std::array<std::uint64_t, 3> key{std::bit_cast<std::uint64_t>(p.x),
-                                             std::bit_cast<std::uint64_t>(p.y),
-                                             std::bit_cast<std::uint64_t>(p.z)};
-      const auto [it, inserted] = shared.try_emplace(key, 0);
+      const auto [it, inserted] = shared.try_emplace(position_key(p), 0);
       if (inserted) it->second = new_vertex(p);
       face.push_back(it->second);
     }
