@@ -13,6 +13,7 @@
 // composed and applied in doubles in the documented order (no FMA: the build
 // uses -ffp-contract=off).
 #include <geometry/gltf_io.h>
+#include <geometry/gltf_matrix.h>
 #include <geometry/input_error.h>
 #include <geometry/mesh_reader_util.h>
 #include <geometry/position_welder.h>
@@ -43,47 +44,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Column-major 4×4 as glTF stores it: m[4·col + row].
-using Matrix = std::array<double, 16>;
-
-constexpr Matrix kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-
-double at(const Matrix& m, int row, int col) { return m[static_cast<std::size_t>(4 * col + row)]; }
-
-/// a·b, each entry summed left to right over k = 0..3.
-Matrix multiply(const Matrix& a, const Matrix& b) {
-  Matrix out{};
-  for (int col = 0; col < 4; ++col)
-    for (int row = 0; row < 4; ++row) {
-      double sum = at(a, row, 0) * at(b, 0, col);
-      for (int k = 1; k < 4; ++k) sum = sum + at(a, row, k) * at(b, k, col);
-      out[static_cast<std::size_t>(4 * col + row)] = sum;
-    }
-  return out;
-}
-
-/// M·(p, 1): x' = ((m00·x + m01·y) + m02·z) + m03, and so on.
-Vec3 transform_point(const Matrix& m, const Vec3& p) {
-  const auto row = [&](int r) {
-    return at(m, r, 0) * p.x + at(m, r, 1) * p.y + at(m, r, 2) * p.z + at(m, r, 3);
-  };
-  return {row(0), row(1), row(2)};
-}
-
-/// M·(v, 0): the translation is not applied.
-Vec3 transform_direction(const Matrix& m, const Vec3& v) {
-  const auto row = [&](int r) { return at(m, r, 0) * v.x + at(m, r, 1) * v.y + at(m, r, 2) * v.z; };
-  return {row(0), row(1), row(2)};
-}
-
-/// Sign of the upper-left 3×3 determinant, in doubles: a mirroring node
-/// (negative determinant) turns glTF's counter-clockwise front faces around.
-bool mirrors(const Matrix& m) {
-  const Vec3 c0{at(m, 0, 0), at(m, 1, 0), at(m, 2, 0)};
-  const Vec3 c1{at(m, 0, 1), at(m, 1, 1), at(m, 2, 1)};
-  const Vec3 c2{at(m, 0, 2), at(m, 1, 2), at(m, 2, 2)};
-  return dot(c0, cross(c1, c2)) < 0;
-}
+using gltf::at;
+using gltf::kIdentity;
+using gltf::Matrix;
+using gltf::mirrors;
+using gltf::multiply;
+using gltf::transform_direction;
+using gltf::transform_point;
 
 template <class T>
 T load_le(const unsigned char* p) {
