@@ -52,11 +52,16 @@ Sign polygon_facing(const Model& model, const Polygon& polygon, const HPoint& li
 }
 
 std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light) {
+  return polygon_roles(model, model_surfaces(model), light);
+}
+
+std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
+                                       const HPoint& light) {
   std::vector<PolygonRole> roles(model.polygons.size());
   std::vector<Vec3> points;
   for (std::size_t p = 0; p < model.polygons.size(); ++p) {
     const Polygon& polygon = model.polygons[p];
-    const PolygonSurface surface = polygon_surface(model.vertices, polygon);
+    const PolygonSurface& surface = surfaces[p];
     if (surface.shape == PolygonShape::degenerate) continue;
     points.clear();
     for (std::uint32_t v : polygon) points.push_back(model.vertices[v]);

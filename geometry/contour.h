@@ -15,9 +15,11 @@
 // Edges are matched by vertex position (bit-identical coordinates), so a
 // mesh with duplicated vertices still finds its shared edges.
 #include <geometry/exact_predicates.h>
+#include <geometry/polygon_surface.h>
 #include <geometry/scene.h>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace umbra::geometry {
@@ -54,6 +56,10 @@ struct PolygonRole {
 /// wraps around the light (folds_seen_from): then it is handled by parity
 /// like a twisted one. All of it exact (twist.h).
 std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light);
+/// The same with the model's surfaces (model_surfaces) already at hand, as
+/// when one model is asked about many lights.
+std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
+                                       const HPoint& light);
 
 /// Edges of nonzero weight, in the order their first polygon lists them;
 /// polygons with facing 0 and twisted polygons add no weight.

@@ -39,6 +39,13 @@ PolygonSurface polygon_surface(std::span<const Vec3> vertices, const Polygon& po
   return surface;
 }
 
+std::vector<PolygonSurface> model_surfaces(const Model& model) {
+  std::vector<PolygonSurface> surfaces;
+  surfaces.reserve(model.polygons.size());
+  for (const Polygon& p : model.polygons) surfaces.push_back(polygon_surface(model.vertices, p));
+  return surfaces;
+}
+
 bool is_polygon_edge(const FanTriangle& t, int i, std::size_t polygon_size) {
   const std::uint32_t a = t.local[i], b = t.local[(i + 1) % 3];
   // Fan edges not touching v0 are (v_k, v_k+1): polygon edges. Of the edges at

@@ -39,6 +39,9 @@ struct PolygonSurface {
 /// `vertices` is the model's vertex list, `polygon` indexes into it.
 PolygonSurface polygon_surface(std::span<const Vec3> vertices, const Polygon& polygon);
 
+/// polygon_surface of every polygon of the model, in order.
+std::vector<PolygonSurface> model_surfaces(const Model& model);
+
 /// Whether the triangle's edge from local[i] to local[(i+1)%3] is an edge of
 /// the polygon rather than a diagonal of its fan. The fan's parity does not
 /// change across a diagonal, so a segment through one crosses the surface as

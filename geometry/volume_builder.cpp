@@ -95,6 +95,10 @@ class ModelVolume {
 ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options) {
   ShadowVolumes volumes;
   const Box bounds = scene_bounds(scene);
+  // Surfaces are the same for every light: computed once per model.
+  std::vector<std::vector<PolygonSurface>> surfaces(scene.models.size());
+  for (std::size_t mi = 0; mi < scene.models.size(); ++mi)
+    if (scene.models[mi].casts_shadows) surfaces[mi] = model_surfaces(scene.models[mi]);
 
   for (std::uint32_t li = 0; li < scene.lights.size(); ++li) {
     const auto start = std::chrono::steady_clock::now();
@@ -112,7 +116,7 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& opti
         stats.crow_all_edges_polygons += p.size();
         stats.crow_bytes += p.size() * polygon_bytes(4);
       }
-      const std::vector<PolygonRole> roles = polygon_roles(model, lp);
+      const std::vector<PolygonRole> roles = polygon_roles(model, surfaces[mi], lp);
       std::vector<std::uint32_t> casting;
       for (std::uint32_t p = 0; p < roles.size(); ++p)
         if (roles[p].facing != 0) casting.push_back(p);
@@ -121,7 +125,7 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& opti
 
       double distance = 0;
       if (light.type == LightType::point) {
-        distance = distance_lower_bound(model, casting, light.position);
+        distance = distance_lower_bound(model, surfaces[mi], casting, light.position);
         if (light.light_end && distance > *light.light_end) {
           // Wholly outside the sphere: everything it could shadow is out of range.
           ++stats.culled_models;

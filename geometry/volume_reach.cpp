@@ -69,14 +69,13 @@ LightReach light_reach(const Scene& scene, const Box& bounds, const Light& light
   return reach;
 }
 
-double distance_lower_bound(const Model& model, std::span<const std::uint32_t> polygons,
-                            const Vec3& light) {
+double distance_lower_bound(const Model& model, std::span<const PolygonSurface> surfaces,
+                            std::span<const std::uint32_t> polygons, const Vec3& light) {
   double nearest = std::numeric_limits<double>::infinity();
   double scale = max_abs(light);
   for (std::uint32_t pi : polygons) {
     const Polygon& polygon = model.polygons[pi];
-    const PolygonSurface surface = polygon_surface(model.vertices, polygon);
-    for (const FanTriangle& t : surface.triangles) {
+    for (const FanTriangle& t : surfaces[pi].triangles) {
       const Vec3& a = model.vertices[polygon[t.local[0]]];
       const Vec3& b = model.vertices[polygon[t.local[1]]];
       const Vec3& c = model.vertices[polygon[t.local[2]]];

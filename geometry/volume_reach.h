@@ -3,6 +3,7 @@
 // unlimited counterpart): the extrusion factor k of one model's volume for
 // one light, chosen so that no eye ray that matters ever meets a far end.
 #include <geometry/bvh.h>
+#include <geometry/polygon_surface.h>
 #include <geometry/scene.h>
 
 #include <optional>
@@ -28,8 +29,8 @@ LightReach light_reach(const Scene& scene, const Box& bounds, const Light& light
 /// A lower bound on the distance from the point light to the surfaces of the
 /// given polygons of `model` (fan triangles), below the true distance by a
 /// margin larger than any rounding; 0 when the bound is not positive.
-double distance_lower_bound(const Model& model, std::span<const std::uint32_t> polygons,
-                            const Vec3& light);
+double distance_lower_bound(const Model& model, std::span<const PolygonSurface> surfaces,
+                            std::span<const std::uint32_t> polygons, const Vec3& light);
 
 /// The extrusion factor for a model whose volume-casting polygons are at
 /// distance >= `distance` from the light: every far vertex, edge and cap then
