@@ -23,7 +23,34 @@ namespace {
 /// The parser has already restricted `name` to these (case-insensitively,
 /// and CLI11 hands back the canonical spelling).
 raster::Method parse_method(const std::string& name) {
-  return name == "exact" ? raster::Method::exact : raster::Method::volume;
+  if (name == "exact") return raster::Method::exact;
+  if (name == "map") return raster::Method::map;
+  if (name == "ray") return raster::Method::ray;
+  return raster::Method::volume;
+}
+
+/// A method's parameters given with another method are a mistake, not
+/// something to ignore silently.
+void check_method_options(const RenderArgs& args) {
+  const bool map_given = args.map_resolution || args.map_bias || args.map_slope_bias ||
+                         args.map_lookup || args.map_dither || args.map_pcf;
+  if (map_given && args.method != "map")
+    throw geometry::InputError("--map-*", "applies to --method map only");
+  if (args.ray_epsilon && args.method != "ray")
+    throw geometry::InputError("--ray-epsilon", "applies to --method ray only");
+}
+
+raster::ShadowMapOptions map_options(const RenderArgs& args) {
+  raster::ShadowMapOptions map;
+  if (args.map_resolution) map.resolution = *args.map_resolution;
+  if (args.map_bias) map.constant_bias = *args.map_bias;
+  if (args.map_slope_bias) map.slope_bias = *args.map_slope_bias;
+  if (args.map_lookup)
+    map.lookup =
+        *args.map_lookup == "bilinear" ? raster::MapLookup::bilinear : raster::MapLookup::nearest;
+  map.dither = args.map_dither;
+  if (args.map_pcf) map.pcf = *args.map_pcf;
+  return map;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -39,9 +66,36 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Output image: .png (beauty) or .exr (beauty + shadow.<i>, count.<i>, depth); "
                   "default <scene stem>.png in the current directory")
       ->type_name("OUT");
-  cmd->add_option("--method", args.method, "Shadow method: volume (default) or exact")
-      ->transform(CLI::IsMember({"volume", "exact"}, CLI::ignore_case))
+  cmd->add_option("--method", args.method,
+                  "Shadow method: volume (default; exact at every sample), map (Williams' shadow "
+                  "maps), ray (Embree occlusion rays) or exact (the oracle; slow)")
+      ->transform(CLI::IsMember({"volume", "map", "ray", "exact"}, CLI::ignore_case))
       ->type_name("METHOD");
+  cmd->add_option("--map-resolution", args.map_resolution,
+                  "Texels per side of each shadow-map view (map only; default 1024)")
+      ->check(CLI::Range(1, 16384))
+      ->type_name("N");
+  cmd->add_option("--map-bias", args.map_bias,
+                  "Constant depth bias (map only; units in docs/methods.md)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("B");
+  cmd->add_option("--map-slope-bias", args.map_slope_bias,
+                  "Slope-scaled depth bias (map only; units in docs/methods.md)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("S");
+  cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest (default) or bilinear")
+      ->transform(CLI::IsMember({"nearest", "bilinear"}, CLI::ignore_case))
+      ->type_name("KIND");
+  cmd->add_flag("--map-dither", args.map_dither, "Dither the lookup position (Williams; map only)");
+  cmd->add_option("--map-pcf", args.map_pcf,
+                  "Percentage-closer filter width in texels: 1 (off, default), 3 or 5")
+      ->check(CLI::IsMember({1, 3, 5}))
+      ->type_name("K");
+  cmd->add_option("--ray-epsilon", args.ray_epsilon,
+                  "Shadow-ray start offset as a fraction of the scene's bounding-box diagonal "
+                  "(ray only; default 1e-5)")
+      ->check(CLI::NonNegativeNumber)
+      ->type_name("E");
   cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
       ->check(thread_count())
       ->type_name("N");
@@ -73,6 +127,7 @@ int run_render(const RenderArgs& args) {
 
   if (args.no_shadows && args.method != "volume")
     throw geometry::InputError("--no-shadows", "applies to --method volume only");
+  check_method_options(args);
   // Cheap checks first: a long render must not end in "unknown extension".
   check_output_path(output, {".png", ".exr"});
   if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});
@@ -87,6 +142,8 @@ int run_render(const RenderArgs& args) {
   options.threads = args.threads;
   options.shadows = !args.no_shadows;
   options.spp = args.spp;
+  options.map = map_options(args);
+  if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
   ProgressBar bar(!args.quiet);
   options.progress = bar.callback();
   raster::RenderStats stats;

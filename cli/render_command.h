@@ -1,7 +1,8 @@
 #pragma once
-// `umbra render SCENE [-o OUT] [--method volume|exact] [--threads N]
-//                     [--stats-json FILE] [--quiet]`
+// `umbra render SCENE [-o OUT] [--method volume|map|ray|exact] [--threads N]
+//                     [--map-* ...] [--ray-epsilon E] [--stats-json FILE] [--quiet]`
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 
 namespace umbra::cli {
@@ -9,12 +10,21 @@ namespace umbra::cli {
 struct RenderArgs {
   std::string scene;
   std::string output;             ///< empty: <scene stem>.png in the current directory
-  std::string method = "volume";  ///< "volume" or "exact" (checked by the parser)
+  std::string method = "volume";  ///< volume, map, ray or exact (checked by the parser)
   unsigned threads = 0;           ///< 0: all hardware threads
   std::string stats_json;         ///< empty: none; "-": stdout
   bool quiet = false;
   bool no_shadows = false;  ///< the plain render (volume method only)
   int spp = 1;              ///< beauty samples per pixel: 1, 9 or 25
+  // --method map (raster::ShadowMapOptions); unset: the library's defaults.
+  std::optional<int> map_resolution;
+  std::optional<double> map_bias;
+  std::optional<double> map_slope_bias;
+  std::optional<std::string> map_lookup;  ///< "nearest" or "bilinear"
+  bool map_dither = false;
+  std::optional<int> map_pcf;
+  // --method ray (raster::RayOptions)
+  std::optional<double> ray_epsilon;
 };
 
 /// Adds the `render` subcommand to `app`, parsing into `args`.

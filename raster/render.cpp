@@ -46,6 +46,10 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
       return render_exact(index, options, s);
     case Method::volume:
       return render_volume(index, options, s);
+    case Method::map:
+      return render_map(index, options, s);
+    case Method::ray:
+      return render_ray(index, options, s);
   }
   return render_volume(index, options, s);
 }

@@ -6,7 +6,32 @@
 
 namespace umbra::raster {
 
-enum class Method { volume, exact };
+/// volume: shadow volumes through the scanline depth count, exact at every
+/// sample; map: Williams' shadow maps (float); ray: one Embree occlusion ray
+/// per sample and light (float); exact: the oracle at every pixel.
+enum class Method { volume, map, ray, exact };
+
+/// How a shadow map is read at a sample (Williams).
+enum class MapLookup { nearest, bilinear };
+
+/// Williams' shadow maps (Method::map): one depth view per direction a light
+/// must shadow (six cube faces for a point light, one orthographic view for a
+/// directional light). Bias units are documented in docs/methods.md.
+struct ShadowMapOptions {
+  int resolution = 1024;       ///< texels per side of each view
+  double constant_bias = 0;    ///< see docs/methods.md; 0 until the method lands
+  double slope_bias = 0;       ///< see docs/methods.md; 0 until the method lands
+  MapLookup lookup = MapLookup::nearest;
+  bool dither = false;  ///< Williams' dither of the lookup position
+  int pcf = 1;          ///< percentage-closer filter width in texels: 1 (off), 3 or 5
+};
+
+/// Ray-cast shadows (Method::ray): Embree in single precision.
+struct RayOptions {
+  /// Shadow rays start this far from the visible point, as a fraction of the
+  /// scene's bounding-box diagonal (the usual self-intersection epsilon).
+  double epsilon = 1e-5;
+};
 
 struct RenderOptions {
   Method method = Method::volume;
@@ -21,6 +46,8 @@ struct RenderOptions {
   /// Told the phase and fraction done while rendering, from any thread, at
   /// most ten times a second (raster/progress.h); empty: nobody listens.
   ProgressCallback progress{};
+  ShadowMapOptions map{};  ///< Method::map only
+  RayOptions ray{};        ///< Method::ray only
 };
 
 struct RenderStats {

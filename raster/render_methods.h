@@ -18,4 +18,15 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
 Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& options,
                     RenderStats& stats);
 
+/// Williams' shadow maps: the visible surface as Method::volume finds it
+/// (scanline, exact where float cannot decide), then each visible sample
+/// compared with each light's depth views in floating point.
+Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options,
+                 RenderStats& stats);
+
+/// Ray-cast shadows with Embree: a primary ray per pixel and one occlusion
+/// ray per visible sample and light, all in single precision.
+Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options,
+                 RenderStats& stats);
+
 }  // namespace umbra::raster

@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels libassimp-dev libcgal-demo
   clang-14 libclang-rt-14-dev
+  libembree-dev python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
