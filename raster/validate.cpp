@@ -6,7 +6,6 @@
 #include <raster/validate.h>
 
 #include <cmath>
-#include <mutex>
 #include <numeric>
 #include <random>
 
@@ -57,97 +56,120 @@ std::uint64_t ValidationReport::total_mismatches() const {
   return total;
 }
 
-ValidationReport validate_render(const geometry::Scene& scene, const ShadowChannels& image,
-                                 const ValidateOptions& options) {
-  const std::string where = scene.source.empty() ? "validate" : scene.source.string();
-  if (image.width != scene.camera.width || image.height != scene.camera.height) {
+namespace {
+
+void check_fits(const std::string& where, int width, int height, std::size_t lights,
+                const ShadowChannels& image) {
+  if (image.width != width || image.height != height) {
     throw geometry::InputError(
         where, "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                   " but the scene's camera renders " + std::to_string(scene.camera.width) + "x" +
-                   std::to_string(scene.camera.height));
+                   " but the scene's camera renders " + std::to_string(width) + "x" +
+                   std::to_string(height));
   }
-  if (image.shadow.size() != scene.lights.size()) {
+  if (image.shadow.size() != lights) {
     throw geometry::InputError(where, "the image has " + std::to_string(image.shadow.size()) +
                                           " shadow channels but the scene has " +
-                                          std::to_string(scene.lights.size()) + " lights");
+                                          std::to_string(lights) + " lights");
   }
-  const std::size_t total = static_cast<std::size_t>(image.width) * image.height;
+  const std::size_t total = static_cast<std::size_t>(width) * height;
   for (const auto& channel : image.shadow) {
     if (channel.size() != total)
       throw geometry::InputError(where, "a shadow channel does not hold one value a pixel");
   }
+}
 
-  ValidationReport report;
-  report.width = image.width;
-  report.height = image.height;
-  report.lights.resize(scene.lights.size());
-  report.mask.assign(total, -1);
+}  // namespace
+
+OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& options) {
+  OracleTruth truth;
+  truth.width = scene.camera.width;
+  truth.height = scene.camera.height;
+  truth.lights = scene.lights.size();
+  const std::size_t total = static_cast<std::size_t>(truth.width) * truth.height;
+  truth.pixels = pixels_to_check(total, options);
+  truth.hit.assign(truth.pixels.size(), 0);
+  truth.cls.assign(truth.pixels.size() * truth.lights, ShadowClass::lit);
+  truth.boundary.assign(truth.pixels.size() * truth.lights, 0);
 
   const geometry::SceneIndex index(scene);
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
-  const std::vector<std::size_t> pixels = pixels_to_check(total, options);
-  report.pixels_checked = pixels.size();
-
-  // Chunks of the pixel list go to threads; each sums into its own report.
+  // Chunks of the pixel list go to threads; each writes its own entries.
   constexpr int kChunk = 256;
-  const int chunks = static_cast<int>((pixels.size() + kChunk - 1) / kChunk);
-  std::mutex merge;
+  const int chunks = static_cast<int>((truth.pixels.size() + kChunk - 1) / kChunk);
   Progress progress(options.progress);
   progress.phase("validate", static_cast<std::uint64_t>(chunks));
   parallel_rows(chunks, options.threads, [&](int c) {
-    std::vector<LightReport> local(scene.lights.size());
-    std::uint64_t background = 0;
-    const std::size_t end = std::min(pixels.size(), static_cast<std::size_t>(c + 1) * kChunk);
+    const std::size_t end =
+        std::min(truth.pixels.size(), static_cast<std::size_t>(c + 1) * kChunk);
     for (std::size_t k = static_cast<std::size_t>(c) * kChunk; k < end; ++k) {
-      const std::size_t p = pixels[k];
-      const int i = static_cast<int>(p % static_cast<std::size_t>(image.width));
-      const int j = static_cast<int>(p / static_cast<std::size_t>(image.width));
+      const std::size_t p = truth.pixels[k];
+      const int i = static_cast<int>(p % static_cast<std::size_t>(truth.width));
+      const int j = static_cast<int>(p / static_cast<std::size_t>(truth.width));
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
-      if (!hit) {
-        ++background;
-        report.mask[p] = 0;
-        continue;
+      if (!hit) continue;
+      truth.hit[k] = 1;
+      for (std::uint32_t l = 0; l < truth.lights; ++l) {
+        const geometry::ShadowAnswer answer = geometry::classify_sample(index, ray, *hit, l);
+        truth.cls[k * truth.lights + l] = answer.cls;
+        truth.boundary[k * truth.lights + l] = answer.boundary ? 1 : 0;
       }
-      std::int8_t mark = 0;
-      for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
-        LightReport& r = local[l];
-        ++r.compared;
-        const geometry::ShadowAnswer truth = geometry::classify_sample(index, ray, *hit, l);
-        if (truth.boundary) {
-          ++r.boundary;
-          mark = std::max<std::int8_t>(mark, 1);
-          continue;
-        }
-        const float value = image.shadow[l][p];
-        const ShadowClass got = class_of_value(value);
-        if (exact_value(value) && got == truth.cls) continue;
-        ++r.mismatches;
-        mark = 2;
-        if (truth.cls == ShadowClass::lit && got == ShadowClass::shadowed) {
-          ++r.false_shadowed;
-        } else if (truth.cls == ShadowClass::shadowed && got == ShadowClass::lit) {
-          ++r.false_lit;
-        } else {
-          ++r.wrong_range;  // out of range on one side only, or a value that is no class
-        }
-      }
-      report.mask[p] = mark;
     }
     progress.advance();
-    const std::lock_guard lock(merge);
-    report.background += background;
-    for (std::size_t l = 0; l < local.size(); ++l) {
-      LightReport& r = report.lights[l];
-      r.compared += local[l].compared;
-      r.boundary += local[l].boundary;
-      r.mismatches += local[l].mismatches;
-      r.false_lit += local[l].false_lit;
-      r.false_shadowed += local[l].false_shadowed;
-      r.wrong_range += local[l].wrong_range;
-    }
   });
+  return truth;
+}
+
+ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& image,
+                              const std::string& where) {
+  check_fits(where, truth.width, truth.height, truth.lights, image);
+  ValidationReport report;
+  report.width = image.width;
+  report.height = image.height;
+  report.lights.resize(truth.lights);
+  report.mask.assign(static_cast<std::size_t>(image.width) * image.height, -1);
+  report.pixels_checked = truth.pixels.size();
+  for (std::size_t k = 0; k < truth.pixels.size(); ++k) {
+    const std::size_t p = truth.pixels[k];
+    if (!truth.hit[k]) {
+      ++report.background;
+      report.mask[p] = 0;
+      continue;
+    }
+    std::int8_t mark = 0;
+    for (std::size_t l = 0; l < truth.lights; ++l) {
+      LightReport& r = report.lights[l];
+      ++r.compared;
+      if (truth.boundary[k * truth.lights + l]) {
+        ++r.boundary;
+        mark = std::max<std::int8_t>(mark, 1);
+        continue;
+      }
+      const ShadowClass expected = truth.cls[k * truth.lights + l];
+      const float value = image.shadow[l][p];
+      const ShadowClass got = class_of_value(value);
+      if (exact_value(value) && got == expected) continue;
+      ++r.mismatches;
+      mark = 2;
+      if (expected == ShadowClass::lit && got == ShadowClass::shadowed) {
+        ++r.false_shadowed;
+      } else if (expected == ShadowClass::shadowed && got == ShadowClass::lit) {
+        ++r.false_lit;
+      } else {
+        ++r.wrong_range;  // out of range on one side only, or a value that is no class
+      }
+    }
+    report.mask[p] = mark;
+  }
   return report;
+}
+
+ValidationReport validate_render(const geometry::Scene& scene, const ShadowChannels& image,
+                                 const ValidateOptions& options) {
+  const std::string where = scene.source.empty() ? "validate" : scene.source.string();
+  // A misfit image is refused before the oracle's long run.
+  check_fits(where, scene.camera.width, scene.camera.height, scene.lights.size(), image);
+  return score_render(oracle_truth(scene, options), image, where);
 }
 
 }  // namespace umbra::raster

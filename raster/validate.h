@@ -1,11 +1,13 @@
 #pragma once
 // Compares a render's shadow.<i> AOVs with the exact oracle.
 #include <geometry/scene.h>
+#include <geometry/shadow_oracle.h>
 #include <raster/image_io.h>
 #include <raster/progress.h>
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace umbra::raster {
@@ -37,8 +39,29 @@ struct ValidationReport {
   std::uint64_t total_mismatches() const;
 };
 
-/// Throws geometry::InputError when the image does not fit the scene
-/// (size, number of shadow channels).
+/// The oracle's answers at the checked pixels of a scene, computed once so
+/// that many renders of the same scene can be scored against them.
+struct OracleTruth {
+  int width = 0, height = 0;
+  std::size_t lights = 0;
+  std::vector<std::size_t> pixels;  ///< checked pixels, row-major order
+  /// Per checked pixel: whether its ray hits a surface.
+  std::vector<std::uint8_t> hit;
+  /// [k * lights + l] for checked pixel k: the oracle's class, and whether
+  /// the sample lies on a boundary (then not scored).
+  std::vector<geometry::ShadowClass> cls;
+  std::vector<std::uint8_t> boundary;
+};
+
+OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& options);
+
+/// Scores `image` against `truth`. Throws geometry::InputError when the image
+/// does not fit (size, number of shadow channels); `where` names the scene.
+ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& image,
+                              const std::string& where = "validate");
+
+/// oracle_truth then score_render. Throws geometry::InputError when the image
+/// does not fit the scene (size, number of shadow channels).
 ValidationReport validate_render(const geometry::Scene& scene, const ShadowChannels& image,
                                  const ValidateOptions& options);
 
