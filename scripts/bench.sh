@@ -8,21 +8,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
-tarball=/usr/share/doc/libcgal-dev/data.tar.gz
-if [ ! -f "$tarball" ]; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO=sudo
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends libcgal-demo
-fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --target umbra_render_bench
-data=build/cgal-data
-if [ ! -d "$data/data/meshes" ]; then
-  mkdir -p "$data"
-  tar -xzf "$tarball" -C "$data" data/meshes/bunny00.off data/meshes/elephant.off \
-    data/meshes/refined_elephant.off
-fi
-m="$data/data/meshes"
+m=$(./scripts/cgal-meshes.sh bunny00.off elephant.off refined_elephant.off)
 mkdir -p out
 UMBRA_BENCH_VALIDATE=1 UMBRA_BENCH_MESHES="$m/elephant.off:$m/bunny00.off:$m/refined_elephant.off" \
   ./build/bench/umbra_render_bench --benchmark_filter=Render \

@@ -1,0 +1,122 @@
+#include "chart_run.h"
+
+#include <fmt/format.h>
+#include <raster/image_io.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace umbra::bench {
+
+namespace {
+
+Setting map_setting(const std::string& curve, int resolution, double bias_factor,
+                    raster::MapLookup lookup, int pcf) {
+  Setting s{"map", curve, {}};
+  s.options.method = raster::Method::map;
+  raster::ShadowMapOptions& m = s.options.map;
+  m.resolution = resolution;
+  m.constant_bias *= bias_factor;
+  m.slope_bias *= bias_factor;
+  m.lookup = lookup;
+  m.pcf = pcf;
+  return s;
+}
+
+Setting ray_setting(const std::string& curve, double epsilon_factor) {
+  Setting s{"ray", curve, {}};
+  s.options.method = raster::Method::ray;
+  s.options.ray.epsilon *= epsilon_factor;
+  return s;
+}
+
+Setting volume_setting() {
+  Setting s{"volume", "volume", {}};
+  s.options.method = raster::Method::volume;
+  return s;
+}
+
+Setting plain_setting() {
+  Setting s{"plain", "no shadows", {}};
+  s.options.method = raster::Method::volume;
+  s.options.shadows = false;
+  return s;
+}
+
+}  // namespace
+
+std::vector<Setting> chart_settings(bool quick, int max_map_resolution) {
+  using raster::MapLookup;
+  std::vector<Setting> out = {plain_setting(), volume_setting()};
+  for (const double f : quick ? std::vector<double>{1} : std::vector<double>{0, 1, 100})
+    out.push_back(ray_setting("ray (epsilon x0, x1, x100 of default)", f));
+  const std::vector<int> resolutions =
+      quick ? std::vector<int>{256, 1024} : std::vector<int>{256, 512, 1024, 2048, 4096};
+  struct Curve {
+    const char* name;
+    double bias;
+    MapLookup lookup;
+    int pcf;
+  };
+  const std::vector<Curve> curves =
+      quick ? std::vector<Curve>{{"map nearest, default bias", 1, MapLookup::nearest, 1}}
+            : std::vector<Curve>{{"map nearest, no bias", 0, MapLookup::nearest, 1},
+                                 {"map nearest, default bias", 1, MapLookup::nearest, 1},
+                                 {"map nearest, 4x bias", 4, MapLookup::nearest, 1},
+                                 {"map bilinear, default bias", 1, MapLookup::bilinear, 1},
+                                 {"map PCF 3x3, default bias", 1, MapLookup::nearest, 3}};
+  for (const Curve& c : curves)
+    for (const int r : resolutions)
+      if (r <= max_map_resolution) out.push_back(map_setting(c.name, r, c.bias, c.lookup, c.pcf));
+  return out;
+}
+
+std::vector<Setting> sweep_settings() {
+  return {volume_setting(), ray_setting("ray", 1),
+          map_setting("map 1024", 1024, 1, raster::MapLookup::nearest, 1),
+          map_setting("map 4096", 4096, 1, raster::MapLookup::nearest, 1)};
+}
+
+Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
+                const Setting& setting, int runs, raster::Frame* last) {
+  Row row;
+  row.setting = setting;
+  raster::Frame frame;
+  for (int r = 0; r < runs; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    frame = raster::render(scene, setting.options);
+    row.seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::vector<double> sorted = row.seconds;
+  std::sort(sorted.begin(), sorted.end());
+  row.median_seconds = sorted[sorted.size() / 2];
+  if (last) *last = frame;
+  if (setting.method == "plain") {
+    row.is_scored = false;
+    return row;
+  }
+  const raster::ShadowChannels channels{frame.width, frame.height, frame.shadow};
+  const raster::ValidationReport report = raster::score_render(truth, channels);
+  for (const raster::LightReport& l : report.lights) {
+    row.compared += l.compared;
+    row.boundary += l.boundary;
+    row.false_lit += l.false_lit;
+    row.false_shadowed += l.false_shadowed;
+    row.wrong_range += l.wrong_range;
+  }
+  return row;
+}
+
+std::string setting_label(const Setting& setting) {
+  const raster::RenderOptions& o = setting.options;
+  if (setting.method == "map")
+    return fmt::format("map-{}-{}-b{:g}-s{:g}-pcf{}", o.map.resolution,
+                       o.map.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest",
+                       o.map.constant_bias, o.map.slope_bias, o.map.pcf);
+  if (setting.method == "ray") return fmt::format("ray-eps{:g}", o.ray.epsilon);
+  return setting.method;
+}
+
+}  // namespace umbra::bench
