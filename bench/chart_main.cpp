@@ -39,6 +39,7 @@ struct Args {
   bool sweeps = true, scenes = true;
   std::string images;  ///< if set: an error picture per row written here
   std::string dump;    ///< if set: every scene written here as scene JSON
+  int city_blocks = 0;  ///< 0: 7 (3 with --quick)
 };
 
 struct NamedScene {
@@ -71,6 +72,7 @@ std::vector<NamedScene> chart_scenes(const Args& args) {
     city.width = 320;
     city.height = 180;
   }
+  if (args.city_blocks > 0) city.blocks = args.city_blocks;
   // (blocks + 1)^2 lights of six views each: maps above 1024 would not fit
   // a sensible memory budget for the whole city.
   out.push_back({fmt::format("night-city-{}-lights", (city.blocks + 1) * (city.blocks + 1)),
@@ -215,6 +217,9 @@ int main(int argc, char** argv) {
   app.add_option("--dump-scenes", args.dump,
                  "Write every scene as scene JSON (inline polygons) to DIR/<name>.json, for "
                  "`umbra render`");
+  app.add_option("--city-blocks", args.city_blocks,
+                 "Blocks per side of the night city ((N+1)^2 street lights; default 7, quick 3)")
+      ->check(CLI::Range(1, 40));
   app.add_flag("!--no-sweeps", args.sweeps, "Skip the stability sweeps");
   app.add_flag("!--no-scenes", args.scenes, "Skip the scene charts");
   CLI11_PARSE(app, argc, argv);

@@ -7,6 +7,7 @@
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
 #include <geometry/volume_crossings.h>
+#include <raster/light_reach.h>
 #include <raster/parallel_rows.h>
 #include <raster/pixel_sample.h>
 #include <raster/render_methods.h>
@@ -97,6 +98,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
 
   start = Clock::now();
   SurfaceTable table = surface_table(index);
+  const ReachTable reach(table.polygons, scene.lights);
   append_shadow_polygons(volumes, table.polygons);
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
   const ScanlineResult scan =
@@ -133,9 +135,11 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
         sample.look = entry.look;
         for (std::uint32_t l = 0; l < lights; ++l) {
           sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
-          sample.classes[l] = out_of_range(scene.lights[l], ray, tri)
-                                  ? ShadowClass::out_of_range
-                                  : class_of_count(sample.counts[l], pixel, l);
+          const Reach r = reach.at(static_cast<std::uint32_t>(id), l);
+          const bool beyond =
+              r == Reach::outside || (r == Reach::cut && out_of_range(scene.lights[l], ray, tri));
+          sample.classes[l] =
+              beyond ? ShadowClass::out_of_range : class_of_count(sample.counts[l], pixel, l);
         }
         store_sample(scene, ray, sample, pixel, frame);
         continue;

@@ -1,0 +1,37 @@
+#pragma once
+// Which visible surfaces a limited light's sphere of influence holds whole,
+// misses, or cuts: decided once per (surface, light) so that a sample on a
+// surface wholly inside or outside the sphere needs no range predicate at
+// all. With many lights of small reach (Bergeron's street lights) nearly
+// every pair is one of the first two.
+#include <geometry/scene.h>
+#include <raster/scanline.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace umbra::raster {
+
+enum class Reach : std::uint8_t {
+  inside,   ///< every point of the surface is within light_end (or the light is unlimited)
+  outside,  ///< every point is beyond light_end
+  cut,      ///< the sphere cuts the surface: decide each sample exactly
+};
+
+class ReachTable {
+ public:
+  /// `surfaces`: the surface polygons (kind surface; their ids index the
+  /// table); shadow polygons among them are ignored.
+  ReachTable(std::span<const RasterPolygon> surfaces, std::span<const geometry::Light> lights);
+
+  Reach at(std::uint32_t surface, std::uint32_t light) const {
+    return reach_[static_cast<std::size_t>(surface) * lights_ + light];
+  }
+
+ private:
+  std::size_t lights_ = 0;
+  std::vector<Reach> reach_;
+};
+
+}  // namespace umbra::raster
