@@ -60,8 +60,10 @@ struct RenderStats {
   std::uint64_t spans = 0;             ///< spans the scanline shaded
   std::uint64_t exact_fallback_pixels = 0;
   std::uint64_t twisted_polygons = 0;  ///< (light, polygon) pairs with an L-twist
-  /// Lights whose volumes the eye lies on the boundary of: their pixels are
-  /// all decided exactly.
+  /// Lights for which no count at the eye is defined (the eye on one of
+  /// their volumes' boundaries, or the segment from the eye to the light
+  /// touching a casting polygon's edge): the oracle decides every sample of
+  /// these lights; the other lights keep the scanline's answers.
   std::uint64_t eye_degenerate_lights = 0;
   std::uint64_t pixels = 0;
   /// How the models' edges are shared (geometry::edge_topology), summed.

@@ -109,8 +109,6 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
 
   start = Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
-  bool any_degenerate = false;
-  for (std::uint8_t d : eye.degenerate) any_degenerate |= d != 0;
   Frame frame(camera.width, camera.height, lights);
   std::atomic<std::uint64_t> fallbacks{0};
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
@@ -122,7 +120,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
-      if (!scan.uncertain[pixel] && !any_degenerate) {
+      if (!scan.uncertain[pixel]) {
         const std::int32_t id = scan.visible[pixel];
         if (id < 0) {
           store_background(pixel, frame);
@@ -134,6 +132,13 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
         sample.normal = entry.normal;
         sample.look = entry.look;
         for (std::uint32_t l = 0; l < lights; ++l) {
+          if (eye.degenerate[l]) {
+            // No count at the eye for this light: the oracle decides its
+            // samples, the scanline's answer stands for every other light.
+            sample.classes[l] = geometry::classify_sample(index, ray, entry.hit, l).cls;
+            sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+            continue;
+          }
           sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
           const Reach r = reach.at(static_cast<std::uint32_t>(id), l);
           const bool beyond =
@@ -144,9 +149,8 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
         store_sample(scene, ray, sample, pixel, frame);
         continue;
       }
-      // Floating point could not decide this pixel, or the eye lies on a
-      // volume's boundary: the visible surface and each light's count again,
-      // exactly.
+      // Floating point could not decide this pixel: the visible surface and
+      // each light's count again, exactly.
       ++row_fallbacks;
       const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
       if (!hit) {

@@ -1,0 +1,56 @@
+#!/usr/bin/python3
+"""CTest check of a quick umbra_chart run: the CSV holds every method on every
+chart scene and every sweep point, the volume method never misclassifies a
+sample, each scored row scored samples, and chart.py drew every chart.
+
+Usage: check_chart.py RESULTS.csv CHART_DIR
+"""
+import csv
+import sys
+from pathlib import Path
+
+SWEEPS = {"grazing", "light_near_plane", "scale", "perturbed", "eye_into_volume",
+          "light_in_view"}
+
+
+def fail(message):
+    sys.exit(f"check_chart: {message}")
+
+
+def main():
+    rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+    out = Path(sys.argv[2])
+    if not rows:
+        fail("no rows")
+    by_name = {}
+    for r in rows:
+        by_name.setdefault((r["kind"], r["name"]), set()).add(r["method"])
+        if r["method"] == "plain":
+            continue
+        if int(r["scored"]) <= 0:
+            fail(f"{r['name']} {r['curve']}: nothing scored")
+        if r["method"] == "volume" and int(r["errors"]) != 0:
+            fail(f"volume misclassified {r['errors']} samples on {r['name']} {r['value']}")
+        if float(r["median_s"]) <= 0:
+            fail(f"{r['name']} {r['curve']}: no time")
+    scenes = {n for (k, n) in by_name if k == "scene"}
+    sweeps = {n for (k, n) in by_name if k != "scene"}
+    if sweeps != SWEEPS:
+        fail(f"sweeps {sorted(sweeps)} instead of {sorted(SWEEPS)}")
+    for (kind, name), methods in by_name.items():
+        wanted = {"plain", "volume", "map", "ray"} if kind == "scene" else {"volume", "map", "ray"}
+        if methods != wanted:
+            fail(f"{name}: methods {sorted(methods)} instead of {sorted(wanted)}")
+    for name in scenes:
+        if not (out / f"chart-{name}.png").stat().st_size:
+            fail(f"chart-{name}.png is empty")
+    for name in sweeps:
+        if not (out / f"sweep-{name}.png").stat().st_size:
+            fail(f"sweep-{name}.png is empty")
+    if "| default |" not in (out / "summary.md").read_text():
+        fail("summary.md lacks the default scene")
+    print(f"check_chart: {len(rows)} rows, {len(scenes)} scenes, {len(sweeps)} sweeps: ok")
+
+
+if __name__ == "__main__":
+    main()
