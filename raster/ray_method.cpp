@@ -188,8 +188,9 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
     }
     RTCIntersectContext incoherent;
     rtcInitIntersectContext(&incoherent);
-    rtcOccluded1M(rt.casters(), &incoherent, occlusion.data(),
-                  static_cast<unsigned>(occlusion.size()), sizeof(RTCRay));
+    if (!occlusion.empty())
+      rtcOccluded1M(rt.casters(), &incoherent, occlusion.data(),
+                    static_cast<unsigned>(occlusion.size()), sizeof(RTCRay));
     for (std::size_t k = 0; k < occlusion.size(); ++k)
       if (occlusion[k].tfar == -kInfinity) classes[slot[k]] = ShadowClass::shadowed;
     shadow_rays += occlusion.size();
