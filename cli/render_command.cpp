@@ -61,7 +61,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with its shadows");
-  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
                   "Output image: .png (beauty) or .exr (beauty + shadow.<i>, count.<i>, depth); "
                   "default <scene stem>.png in the current directory")
@@ -167,6 +169,7 @@ int run_render(const RenderArgs& args) {
     run.height = frame.height;
     run.lights = scene.lights.size();
     run.models = scene.models.size();
+    if (options.method == raster::Method::ray) run.ray_epsilon = options.ray.epsilon;
     emit_json(render_stats_json(run, stats, timings), args.stats_json);
   }
 

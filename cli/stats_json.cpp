@@ -19,8 +19,8 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["seconds"] = {
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
       {"raster", stats.seconds_raster}, {"decide", stats.seconds_decide},
-      {"render", timings.render},       {"write", timings.write},
-      {"total", timings.total},
+      {"bvh", stats.seconds_bvh},       {"render", timings.render},
+      {"write", timings.write},         {"total", timings.total},
   };
   j["counts"] = {
       {"pixels", stats.pixels},
@@ -34,7 +34,12 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"boundary_edges", stats.boundary_edges},
       {"non_manifold_edges", stats.non_manifold_edges},
       {"degenerate_polygons", stats.degenerate_polygons},
+      {"primary_rays", stats.primary_rays},
+      {"shadow_rays", stats.shadow_rays},
   };
+  // The ray method's parameter as the renderer took it, and what it meant in
+  // scene units (docs/ray-cast.md).
+  if (run.ray_epsilon) j["ray"] = {{"epsilon", *run.ray_epsilon}, {"offset", stats.ray_offset}};
   return j;
 }
 

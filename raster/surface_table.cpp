@@ -52,17 +52,22 @@ geometry::HitTriangle set_surface(const geometry::SceneIndex& index, const geome
   return tri;
 }
 
+SurfaceEntry surface_entry(const geometry::SceneIndex& index, const geometry::SurfaceHit& hit) {
+  SurfaceEntry entry;
+  entry.hit = hit;
+  entry.normal = hit_normal(index, hit);
+  entry.look = look_of(index.scene().models[index.polygons()[hit.polygon].model]);
+  return entry;
+}
+
 SurfaceTable surface_table(const geometry::SceneIndex& index) {
   SurfaceTable table;
   const auto polygons = index.polygons();
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     const geometry::IndexedPolygon& p = polygons[i];
-    const SurfaceLook look = look_of(index.scene().models[p.model]);
     const auto add = [&](std::uint32_t triangle, std::vector<Vec3> vertices) {
-      SurfaceEntry entry;
-      entry.hit = geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false};
-      entry.normal = hit_normal(index, entry.hit);
-      entry.look = look;
+      const SurfaceEntry entry = surface_entry(
+          index, geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false});
       RasterPolygon raster;
       raster.vertices = std::move(vertices);
       raster.kind = RasterPolygon::Kind::surface;

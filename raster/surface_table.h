@@ -28,6 +28,9 @@ struct SurfaceTable {
 
 SurfaceTable surface_table(const geometry::SceneIndex& index);
 
+/// The entry of one polygon's fan triangle: its normal and its model's look.
+SurfaceEntry surface_entry(const geometry::SceneIndex& index, const geometry::SurfaceHit& hit);
+
 /// Fills the surface part of `sample` (t, normal, color) from an exact hit
 /// found by geometry::first_hit for `ray`; returns the hit's triangle.
 geometry::HitTriangle set_surface(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
