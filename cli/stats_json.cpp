@@ -18,9 +18,9 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["models"] = run.models;
   j["seconds"] = {
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
-      {"raster", stats.seconds_raster}, {"decide", stats.seconds_decide},
-      {"render", timings.render},       {"write", timings.write},
-      {"total", timings.total},
+      {"raster", stats.seconds_raster}, {"maps", stats.seconds_maps},
+      {"decide", stats.seconds_decide}, {"render", timings.render},
+      {"write", timings.write},         {"total", timings.total},
   };
   j["counts"] = {
       {"pixels", stats.pixels},
@@ -34,7 +34,23 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"boundary_edges", stats.boundary_edges},
       {"non_manifold_edges", stats.non_manifold_edges},
       {"degenerate_polygons", stats.degenerate_polygons},
+      {"map_views", stats.map_views},
+      {"map_texels", stats.map_texels},
+      {"map_lookups", stats.map_lookups},
   };
+  if (run.map) {
+    // The settings beside the numbers, so that a benchmark's record says
+    // which map it measured.
+    const raster::ShadowMapOptions& m = *run.map;
+    j["map"] = {
+        {"resolution", m.resolution},
+        {"constant_bias", m.constant_bias},
+        {"slope_bias", m.slope_bias},
+        {"lookup", m.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest"},
+        {"dither", m.dither},
+        {"pcf", m.pcf},
+    };
+  }
   return j;
 }
 

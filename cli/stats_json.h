@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct RenderRun {
   int height = 0;
   std::size_t lights = 0;
   std::size_t models = 0;
+  /// The shadow-map settings, written for --method map only.
+  std::optional<raster::ShadowMapOptions> map;
 };
 
 nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::RenderStats& stats,
