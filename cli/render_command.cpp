@@ -74,15 +74,18 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->transform(CLI::IsMember({"volume", "map", "ray", "exact"}, CLI::ignore_case))
       ->type_name("METHOD");
   cmd->add_option("--map-resolution", args.map_resolution,
-                  "Texels per side of each shadow-map view (map only; default 1024)")
+                  "Texels across each shadow-map view: a 90° cube face of a point light, the "
+                  "scene's extent for a directional light (map only; default 2048)")
       ->check(CLI::Range(1, 16384))
       ->type_name("N");
   cmd->add_option("--map-bias", args.map_bias,
-                  "Constant depth bias (map only; units in docs/methods.md)")
+                  "Constant depth bias in float depth spacings at the sample's depth, as "
+                  "glPolygonOffset's units (map only; default 4; docs/shadow-maps.md)")
       ->check(CLI::NonNegativeNumber)
       ->type_name("B");
   cmd->add_option("--map-slope-bias", args.map_slope_bias,
-                  "Slope-scaled depth bias (map only; units in docs/methods.md)")
+                  "Slope-scaled depth bias: times the receiver's depth change per texel, as "
+                  "glPolygonOffset's factor (map only; default 1.5; docs/shadow-maps.md)")
       ->check(CLI::NonNegativeNumber)
       ->type_name("S");
   cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest (default) or bilinear")
@@ -90,7 +93,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->type_name("KIND");
   cmd->add_flag("--map-dither", args.map_dither, "Dither the lookup position (Williams; map only)");
   cmd->add_option("--map-pcf", args.map_pcf,
-                  "Percentage-closer filter width in texels: 1 (off, default), 3 or 5")
+                  "Percentage-closer filter width in texels: 1 (off, default), 3 or 5 (map only; "
+                  "shadow.<i> is shadowed where less than half the filter sees the light)")
       ->check(CLI::IsMember({1, 3, 5}))
       ->type_name("K");
   cmd->add_option("--ray-epsilon", args.ray_epsilon,
@@ -170,6 +174,7 @@ int run_render(const RenderArgs& args) {
     run.lights = scene.lights.size();
     run.models = scene.models.size();
     if (options.method == raster::Method::ray) run.ray_epsilon = options.ray.epsilon;
+    if (options.method == raster::Method::map) run.map = options.map;
     emit_json(render_stats_json(run, stats, timings), args.stats_json);
   }
 

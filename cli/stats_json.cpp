@@ -18,8 +18,9 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["models"] = run.models;
   j["seconds"] = {
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
-      {"raster", stats.seconds_raster}, {"decide", stats.seconds_decide},
-      {"bvh", stats.seconds_bvh},       {"render", timings.render},
+      {"raster", stats.seconds_raster}, {"maps", stats.seconds_maps},
+      {"decide", stats.seconds_decide}, {"bvh", stats.seconds_bvh},
+      {"render", timings.render},
       {"write", timings.write},         {"total", timings.total},
   };
   j["counts"] = {
@@ -36,10 +37,26 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"degenerate_polygons", stats.degenerate_polygons},
       {"primary_rays", stats.primary_rays},
       {"shadow_rays", stats.shadow_rays},
+      {"map_views", stats.map_views},
+      {"map_texels", stats.map_texels},
+      {"map_lookups", stats.map_lookups},
   };
   // The ray method's parameter as the renderer took it, and what it meant in
   // scene units (docs/ray-cast.md).
   if (run.ray_epsilon) j["ray"] = {{"epsilon", *run.ray_epsilon}, {"offset", stats.ray_offset}};
+  if (run.map) {
+    // The settings beside the numbers, so that a benchmark's record says
+    // which map it measured.
+    const raster::ShadowMapOptions& m = *run.map;
+    j["map"] = {
+        {"resolution", m.resolution},
+        {"constant_bias", m.constant_bias},
+        {"slope_bias", m.slope_bias},
+        {"lookup", m.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest"},
+        {"dither", m.dither},
+        {"pcf", m.pcf},
+    };
+  }
   return j;
 }
 

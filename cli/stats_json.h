@@ -33,6 +33,8 @@ struct RenderRun {
   std::size_t models = 0;
   /// --method ray: RayOptions::epsilon as used (the default when not given).
   std::optional<double> ray_epsilon;
+  /// The shadow-map settings, written for --method map only.
+  std::optional<raster::ShadowMapOptions> map;
 };
 
 nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::RenderStats& stats,

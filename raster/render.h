@@ -15,15 +15,22 @@ enum class Method { volume, map, ray, exact };
 enum class MapLookup { nearest, bilinear };
 
 /// Williams' shadow maps (Method::map): one depth view per direction a light
-/// must shadow (six cube faces for a point light, one orthographic view for a
-/// directional light). Bias units are documented in docs/methods.md.
+/// must shadow (six 90° cube faces for a point light, one orthographic view
+/// for a directional light), built only where some visible sample reads it.
+/// A sample is lit when its view-space depth z satisfies z <= stored + bias,
+/// bias = slope_bias · (receiver depth change per texel) + constant_bias ·
+/// (float spacing of depths at z): glPolygonOffset's factor and units for a
+/// float depth buffer, so both are free of the scene's scale.
+/// docs/shadow-maps.md has the details and how each setting fails.
 struct ShadowMapOptions {
-  int resolution = 1024;     ///< texels per side of each view
-  double constant_bias = 0;  ///< see docs/methods.md; 0 until the method lands
-  double slope_bias = 0;     ///< see docs/methods.md; 0 until the method lands
+  int resolution = 2048;     ///< texels per side of each view's nominal extent (a 90° cube face)
+  double constant_bias = 4;  ///< units: float depth spacings (2^(e-24) at depth m·2^e)
+  double slope_bias = 1.5;   ///< factor: times the receiver's max depth change per texel
   MapLookup lookup = MapLookup::nearest;
-  bool dither = false;  ///< Williams' dither of the lookup position
-  int pcf = 1;          ///< percentage-closer filter width in texels: 1 (off), 3 or 5
+  bool dither = false;  ///< Williams' dither of the lookup position (hash of pixel and light)
+  /// Percentage-closer filter width in texels: 1 (off), 3 or 5. shadow.<i>
+  /// is shadowed when less than half the filter sees the light.
+  int pcf = 1;
 };
 
 /// Ray-cast shadows (Method::ray): Embree in single precision
@@ -83,6 +90,12 @@ struct RenderStats {
   double ray_offset = 0;  ///< the shadow-ray offset in scene units: epsilon × diagonal
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;
+  /// Method::map: depth views built (the others no sample reads), their
+  /// texels, (sample, light) pairs looked up, and the time to build the views.
+  std::uint64_t map_views = 0;
+  std::uint64_t map_texels = 0;
+  std::uint64_t map_lookups = 0;
+  double seconds_maps = 0;
 };
 
 Frame render(const geometry::Scene& scene, const RenderOptions& options,

@@ -8,6 +8,7 @@
 #include <geometry/volume_builder.h>
 #include <geometry/volume_crossings.h>
 #include <raster/light_reach.h>
+#include <raster/light_range.h>
 #include <raster/parallel_rows.h>
 #include <raster/pixel_sample.h>
 #include <raster/render_methods.h>
@@ -44,16 +45,6 @@ void append_shadow_polygons(const geometry::ShadowVolumes& volumes,
     raster.group = s.group;
     polygons.push_back(std::move(raster));
   }
-}
-
-/// Out of range decided exactly on the plane of the visible triangle:
-/// |H - L| > light_end (DESIGN.md; equality is a boundary, taken as in range).
-bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
-                  const geometry::HitTriangle& tri) {
-  if (light.type != geometry::LightType::point || !light.light_end) return false;
-  return geometry::compare_hit_distance(ray.origin, ray.direction, tri.a, tri.b, tri.c,
-                                        light.position,
-                                        *light.light_end) == geometry::Sign::positive;
 }
 
 /// Every volume-casting polygon adds 1 inside its volume and nothing takes
