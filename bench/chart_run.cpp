@@ -73,9 +73,11 @@ std::vector<Setting> chart_settings(bool quick, int max_map_resolution) {
 }
 
 std::vector<Setting> sweep_settings() {
+  const int map_default = raster::ShadowMapOptions{}.resolution;
   return {volume_setting(), ray_setting("ray", 1),
-          map_setting("map 1024", 1024, 1, raster::MapLookup::nearest, 1),
-          map_setting("map 4096", 4096, 1, raster::MapLookup::nearest, 1)};
+          map_setting("map 512", 512, 1, raster::MapLookup::nearest, 1),
+          map_setting("map " + std::to_string(map_default) + " (default)", map_default, 1,
+                      raster::MapLookup::nearest, 1)};
 }
 
 Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,

@@ -33,7 +33,8 @@ struct Row {
 /// one or two points per curve.
 std::vector<Setting> chart_settings(bool quick, int max_map_resolution);
 
-/// The settings of the sweeps: each method at its defaults.
+/// The settings of the sweeps: each method at its defaults, and a coarse
+/// shadow map (512) beside the default one.
 std::vector<Setting> sweep_settings();
 
 /// Renders `scene` `runs` times with the setting (the median is the time)

@@ -65,6 +65,25 @@ Sweep scale(int width, int height) {
   return s;
 }
 
+/// The same picture moved away from the origin: float coordinates lose
+/// their low bits while the scene's own size stays the same.
+Sweep far_from_origin(int width, int height) {
+  Sweep s{"far_from_origin", "distance of the scene from the origin", true, {}};
+  Scene base = box_on_floor(width, height);
+  base.lights = {point_light({2, 3, 1.5}, 1)};
+  for (const double d : {0.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6}) {
+    Scene scene = base;
+    const Vec3 offset{d, 0.5 * d, -0.75 * d};
+    for (geometry::Model& m : scene.models)
+      for (Vec3& v : m.vertices) v = v + offset;
+    for (geometry::Light& l : scene.lights) l.position = l.position + offset;
+    scene.camera.eye = scene.camera.eye + offset;
+    scene.camera.look_at = scene.camera.look_at + offset;
+    s.points.push_back({d, std::move(scene)});
+  }
+  return s;
+}
+
 /// Each coordinate moved by a seeded random number of ulps in [-k, k]: two
 /// stacked boxes on the floor, whose contacts stop being exact.
 Sweep perturbed(int width, int height) {
@@ -127,9 +146,10 @@ Sweep light_in_view(int width, int height) {
 }  // namespace
 
 std::vector<Sweep> stability_sweeps(int width, int height, bool quick) {
-  std::vector<Sweep> all = {grazing(width, height),         light_near_plane(width, height),
-                            scale(width, height),           perturbed(width, height),
-                            eye_into_volume(width, height), light_in_view(width, height)};
+  std::vector<Sweep> all = {grazing(width, height),      light_near_plane(width, height),
+                            scale(width, height),        far_from_origin(width, height),
+                            perturbed(width, height),    eye_into_volume(width, height),
+                            light_in_view(width, height)};
   if (quick) {
     for (Sweep& s : all) {
       // First, middle and last point.

@@ -89,7 +89,7 @@ def sweep_chart(name, rows, out):
         method = pts[0]["method"]
         style = dict(STYLE[method])
         if method == "map":
-            style["linestyle"] = "-" if "1024" in curve else ":"
+            style["linestyle"] = "-" if "default" in curve else ":"
         for ax, key in zip(axes, ("false_lit", "false_shadowed")):
             ys = [100.0 * p[key] / p["scored"] if p["scored"] else 0 for p in pts]
             ax.plot([p["value"] for p in pts], ys, label=curve, **style)

@@ -9,7 +9,7 @@ import csv
 import sys
 from pathlib import Path
 
-SWEEPS = {"grazing", "light_near_plane", "scale", "perturbed", "eye_into_volume",
+SWEEPS = {"grazing", "light_near_plane", "scale", "far_from_origin", "perturbed", "eye_into_volume",
           "light_in_view"}
 
 
