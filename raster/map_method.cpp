@@ -9,6 +9,7 @@
 #include <geometry/exact_predicates.h>
 #include <raster/light_range.h>
 #include <raster/parallel_rows.h>
+#include <raster/phase_clock.h>
 #include <raster/pixel_sample.h>
 #include <raster/render_methods.h>
 #include <raster/scanline.h>
@@ -29,11 +30,6 @@ using geometry::ShadowClass;
 using geometry::Vec3;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// What the visible pass leaves for a (pixel, light): a class already
 /// decided, or the view to read.

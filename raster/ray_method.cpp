@@ -7,6 +7,7 @@
 // validator counts.
 #include <raster/embree_scene.h>
 #include <raster/parallel_rows.h>
+#include <raster/phase_clock.h>
 #include <raster/pixel_sample.h>
 #include <raster/render_methods.h>
 
@@ -23,11 +24,6 @@ namespace umbra::raster {
 using geometry::ShadowClass;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 

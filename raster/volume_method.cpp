@@ -10,6 +10,7 @@
 #include <raster/light_reach.h>
 #include <raster/light_range.h>
 #include <raster/parallel_rows.h>
+#include <raster/phase_clock.h>
 #include <raster/pixel_sample.h>
 #include <raster/render_methods.h>
 #include <raster/scanline.h>
@@ -25,11 +26,6 @@ namespace umbra::raster {
 using geometry::ShadowClass;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// The shadow polygons enter the scanline's sorts beside the surfaces.
 void append_shadow_polygons(const geometry::ShadowVolumes& volumes,
