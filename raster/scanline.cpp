@@ -175,40 +175,82 @@ class Band {
   void run(int row0, int row1) {
     const int width = scene_.camera.frame.width;
     ray_.resize(width);
+    ray_length_.resize(width);
     visible_error_.resize(width);
     // Start the active edge list at row0: every edge active there.
     for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
       const std::uint32_t e = scene_.by_scan_row[k];
-      if (scene_.edges[e].scan.last >= row0) crossings_.push_back({0, e});
+      if (scene_.edges[e].scan.last >= row0) crossings_.push_back(make_crossing(e));
     }
     for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k) {
       const std::uint32_t e = scene_.by_near_row[k];
-      if (scene_.edges[e].near.last >= row0) near_edges_.push_back(e);
+      if (scene_.edges[e].near.last >= row0) near_edges_.push_back(make_near_edge(e));
     }
     for (int j = row0; j < row1; ++j) {
-      std::erase_if(crossings_,
-                    [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
+      std::erase_if(crossings_, [&](const Crossing& c) { return c.last < j; });
       // Edges carried over from the previous row stay nearly sorted; the
       // row's new edges are sorted apart and merged in (appending them to an
       // insertion sort would move each across the whole list).
       const std::size_t carried = j > row0 ? crossings_.size() : 0;
       if (j > row0) {
         for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
-          crossings_.push_back({0, scene_.by_scan_row[k]});
+          crossings_.push_back(make_crossing(scene_.by_scan_row[k]));
         for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
-          near_edges_.push_back(scene_.by_near_row[k]);
+          near_edges_.push_back(make_near_edge(scene_.by_near_row[k]));
       }
-      std::erase_if(near_edges_, [&](std::uint32_t e) { return scene_.edges[e].near.last < j; });
+      std::erase_if(near_edges_, [&](const NearEdge& e) { return e.last < j; });
       scan_row(j, carried);
       if (progress_) progress_->advance();
     }
   }
 
  private:
+  /// An edge in the active edge list. What every row reads is copied in
+  /// (the line, the polygon, its kind, the last row) so that the walk over
+  /// tens of thousands of shadow edges per row reads one array front to back
+  /// instead of missing the cache on the edge table and the polygons.
   struct Crossing {
     double x;
+    Vec3 m;  ///< the edge's homogeneous line (ProjectedEdge::m)
     std::uint32_t edge;
+    std::uint32_t polygon;
+    int last;  ///< last active row
+    bool shadow;
   };
+  /// An edge whose uncertainty strip meets the row, with everything
+  /// flag_near_edges reads (copied for the same reason as Crossing).
+  struct NearEdge {
+    Vec3 m;
+    double hyp;       ///< |(m.x, m.y)|
+    double rounding;  ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
+    double xa, ya, xb, yb, err_a, err_b;
+    double margin;  ///< TableEdge::near_margin
+    std::uint32_t polygon;
+    int last;  ///< last row of the strip
+  };
+
+  Crossing make_crossing(std::uint32_t k) const {
+    const TableEdge& t = scene_.edges[k];
+    return {0,           t.edge.m,
+            k,           t.edge.polygon,
+            t.scan.last, scene_.polygons[t.edge.polygon].kind == RasterPolygon::Kind::shadow};
+  }
+  NearEdge make_near_edge(std::uint32_t k) const {
+    const TableEdge& t = scene_.edges[k];
+    const ProjectedEdge& e = t.edge;
+    return {e.m,
+            std::hypot(e.m.x, e.m.y),
+            1e-12 * e.m_scale,
+            e.xa,
+            e.ya,
+            e.xb,
+            e.yb,
+            e.err_a,
+            e.err_b,
+            t.near_margin,
+            e.polygon,
+            t.near.last};
+  }
 
   std::size_t pixel(int i, int j) const {
     return static_cast<std::size_t>(j) * scene_.camera.frame.width + static_cast<std::size_t>(i);
@@ -217,11 +259,12 @@ class Band {
   /// Pixel x at which edge e crosses row j's centre line, from the edge's
   /// homogeneous line (well conditioned even when an endpoint was clipped far
   /// off screen); endpoint interpolation only for a line with m.x = 0.
-  double crossing_x(const ProjectedEdge& e, int j) const {
+  double crossing_x(const Crossing& c, int j) const {
     const double sy = scene_.camera.row_screen_y(j);
-    const double sx = -(e.m.y * sy + e.m.z) / e.m.x;
+    const double sx = -(c.m.y * sy + c.m.z) / c.m.x;
     double x = scene_.camera.pixel_x(sx);
     if (!std::isfinite(x)) {
+      const ProjectedEdge& e = scene_.edges[c.edge].edge;
       const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
       x = e.xa + lambda * (e.xb - e.xa);
     }
@@ -234,6 +277,7 @@ class Band {
     const int width = camera.frame.width;
     for (int i = 0; i < width; ++i) {
       ray_[i] = camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
+      ray_length_[i] = length(ray_[i]);
       const std::size_t p = pixel(i, j);
       result_.visible[p] = -1;
       result_.depth[p] = kInfinity;
@@ -244,7 +288,7 @@ class Band {
     // x sort: insertion sort of the carried crossings (nearly sorted since
     // the previous row), the new ones sorted apart, then one merge.
 
-    for (Crossing& c : crossings_) c.x = crossing_x(scene_.edges[c.edge].edge, j);
+    for (Crossing& c : crossings_) c.x = crossing_x(c, j);
     const auto less = [](const Crossing& a, const Crossing& b) {
       return a.x < b.x || (a.x == b.x && a.edge < b.edge);
     };
@@ -259,7 +303,7 @@ class Band {
     std::inplace_merge(crossings_.begin(), middle, crossings_.end(), less);
     // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
     for (std::size_t k = 0; k < crossings_.size(); ++k) {
-      toggle(scene_.edges[crossings_[k].edge].edge.polygon);
+      toggle(crossings_[k].polygon, crossings_[k].shadow);
       // A span without surfaces is background whatever shadow polygons cross
       // it (Crow's saving): nothing to do.
       if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
@@ -281,9 +325,8 @@ class Band {
     flag_degenerate(j);
   }
 
-  void toggle(std::uint32_t polygon) {
-    std::vector<std::uint32_t>& list =
-        scene_.polygons[polygon].kind == RasterPolygon::Kind::shadow ? shadows_ : surfaces_;
+  void toggle(std::uint32_t polygon, bool shadow) {
+    std::vector<std::uint32_t>& list = shadow ? shadows_ : surfaces_;
     if (inside_[polygon]) {
       inside_[polygon] = 0;
       const std::uint32_t last = list.back();
@@ -397,13 +440,11 @@ class Band {
     const CameraSpace& camera = scene_.camera;
     const int width = camera.frame.width;
     const double row_y = j + 0.5;
-    for (std::uint32_t k : near_edges_) {
-      const TableEdge& table_edge = scene_.edges[k];
-      const ProjectedEdge& e = table_edge.edge;
+    for (const NearEdge& e : near_edges_) {
       double extra = 0;
       if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
       if (std::abs(row_y - e.yb) <= e.err_b) extra = std::max(extra, e.err_b);
-      const double margin = table_edge.near_margin + extra;
+      const double margin = e.margin + extra;
       // Pixels of this row within `margin` of the segment: the segment's part
       // in the strip |y − row_y| ≤ margin, widened by margin.
       const double y_lo = row_y - margin, y_hi = row_y + margin;
@@ -421,16 +462,14 @@ class Band {
       }
       const int i0 = clamp_column(std::ceil(x_lo - margin - 0.5), width);
       const int i1 = clamp_column(std::floor(x_hi + margin - 0.5) + 1, width);
-      const ProjectedPolygon& polygon = scene_.polygons[e.polygon];
-      const double hyp = std::hypot(e.m.x, e.m.y);
       for (int i = i0; i < i1; ++i) {
         const std::size_t p = pixel(i, j);
         if (result_.uncertain[p]) continue;
         const Vec3& d = ray_[i];
-        const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * hyp +
-                                 1e-12 * e.m_scale * length(d);
+        const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * e.hyp +
+                                 e.rounding * ray_length_[i];
         if (std::abs(dot(e.m, d)) > threshold) continue;
-        if (matters(polygon, i, p)) result_.uncertain[p] = 1;
+        if (matters(scene_.polygons[e.polygon], i, p)) result_.uncertain[p] = 1;
       }
     }
   }
@@ -467,17 +506,18 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
-  std::uint64_t spans_ = 0;                // spans shaded by this band
-  std::vector<Crossing> crossings_;        // the active edge list, x-sorted
-  std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
-  std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
-  std::vector<std::uint32_t> slot_;        // per polygon: its place in surfaces_ or shadows_
-  std::vector<std::uint32_t> surfaces_;    // surfaces inside at the current span
-  std::vector<std::uint32_t> shadows_;     // shadow polygons inside at the current span
-  std::vector<DepthEntry> order_;          // the span's depth-ordered list
-  std::vector<Vec3> ray_;                  // the row's sample directions in camera space
-  std::vector<double> visible_error_;      // depth error bound of each pixel's visible hit
-  std::vector<std::uint8_t> flags_;        // per twisted group: its flag along the current ray
+  std::uint64_t spans_ = 0;              // spans shaded by this band
+  std::vector<Crossing> crossings_;      // the active edge list, x-sorted
+  std::vector<NearEdge> near_edges_;     // edges whose strip meets the row
+  std::vector<std::uint8_t> inside_;     // per polygon: even-odd state along the row
+  std::vector<std::uint32_t> slot_;      // per polygon: its place in surfaces_ or shadows_
+  std::vector<std::uint32_t> surfaces_;  // surfaces inside at the current span
+  std::vector<std::uint32_t> shadows_;   // shadow polygons inside at the current span
+  std::vector<DepthEntry> order_;        // the span's depth-ordered list
+  std::vector<Vec3> ray_;                // the row's sample directions in camera space
+  std::vector<double> ray_length_;       // their lengths
+  std::vector<double> visible_error_;    // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;      // per twisted group: its flag along the current ray
   std::vector<const ProjectedPolygon*> toggled_;  // twisted shadow polygons crossed at this pixel
 };
 
