@@ -177,29 +177,33 @@ class Band {
     ray_.resize(width);
     ray_length_.resize(width);
     visible_error_.resize(width);
-    // Start the active edge list at row0: every edge active there.
+    // Start the active edge lists at row0: every edge active there.
     for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
       const std::uint32_t e = scene_.by_scan_row[k];
-      if (scene_.edges[e].scan.last >= row0) crossings_.push_back(make_crossing(e));
+      if (scene_.edges[e].scan.last >= row0) activate(e);
     }
     for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k) {
       const std::uint32_t e = scene_.by_near_row[k];
       if (scene_.edges[e].near.last >= row0) near_edges_.push_back(make_near_edge(e));
     }
     for (int j = row0; j < row1; ++j) {
-      std::erase_if(crossings_, [&](const Crossing& c) { return c.last < j; });
+      const auto ended = [&](const Crossing& c) { return c.last < j; };
+      std::erase_if(crossings_, ended);
+      std::erase_if(shadow_crossings_, ended);
       // Edges carried over from the previous row stay nearly sorted; the
       // row's new edges are sorted apart and merged in (appending them to an
       // insertion sort would move each across the whole list).
       const std::size_t carried = j > row0 ? crossings_.size() : 0;
+      const std::size_t shadows_carried = j > row0 ? shadow_crossings_.size() : 0;
       if (j > row0) {
         for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
-          crossings_.push_back(make_crossing(scene_.by_scan_row[k]));
+          activate(scene_.by_scan_row[k]);
         for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
           near_edges_.push_back(make_near_edge(scene_.by_near_row[k]));
       }
       std::erase_if(near_edges_, [&](const NearEdge& e) { return e.last < j; });
       scan_row(j, carried);
+      scan_shadows(j, shadows_carried);
       if (progress_) progress_->advance();
     }
   }
@@ -215,7 +219,6 @@ class Band {
     std::uint32_t edge;
     std::uint32_t polygon;
     int last;  ///< last active row
-    bool shadow;
   };
   /// An edge whose uncertainty strip meets the row, with everything
   /// flag_near_edges reads (copied for the same reason as Crossing).
@@ -229,11 +232,12 @@ class Band {
     int last;  ///< last row of the strip
   };
 
-  Crossing make_crossing(std::uint32_t k) const {
+  /// Edge k enters the surfaces' or the shadow polygons' active list.
+  void activate(std::uint32_t k) {
     const TableEdge& t = scene_.edges[k];
-    return {0,           t.edge.m,
-            k,           t.edge.polygon,
-            t.scan.last, scene_.polygons[t.edge.polygon].kind == RasterPolygon::Kind::shadow};
+    const bool shadow = scene_.polygons[t.edge.polygon].kind == RasterPolygon::Kind::shadow;
+    (shadow ? shadow_crossings_ : crossings_)
+        .push_back({0, t.edge.m, k, t.edge.polygon, t.scan.last});
   }
   NearEdge make_near_edge(std::uint32_t k) const {
     const TableEdge& t = scene_.edges[k];
@@ -271,7 +275,9 @@ class Band {
     return x;
   }
 
-  /// Row j; crossings_[0, carried) were active on the row before.
+  /// Row j's surfaces: visible polygon, depth and their uncertainty;
+  /// crossings_[0, carried) were active on the row before. The shadow
+  /// polygons are counted afterwards (scan_shadows).
   void scan_row(int j, std::size_t carried) {
     const CameraSpace& camera = scene_.camera;
     const int width = camera.frame.width;
@@ -303,9 +309,8 @@ class Band {
     std::inplace_merge(crossings_.begin(), middle, crossings_.end(), less);
     // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
     for (std::size_t k = 0; k < crossings_.size(); ++k) {
-      toggle(crossings_[k].polygon, crossings_[k].shadow);
-      // A span without surfaces is background whatever shadow polygons cross
-      // it (Crow's saving): nothing to do.
+      toggle(crossings_[k].polygon);
+      // A span without surfaces is background: nothing to do.
       if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
       const int i0 = clamp_column(std::ceil(crossings_[k].x - 0.5), width);
       const int i1 = clamp_column(std::ceil(crossings_[k + 1].x - 0.5), width);
@@ -317,16 +322,46 @@ class Band {
     // Each polygon has an even number of active edges on a row, so every
     // toggle is undone by now; clear anyway so one bad row cannot leak.
     for (std::uint32_t polygon : surfaces_) inside_[polygon] = 0;
-    for (std::uint32_t polygon : shadows_) inside_[polygon] = 0;
     surfaces_.clear();
-    shadows_.clear();
+  }
 
+  /// Row j's shadow polygons, once its visible points are known
+  /// (Bergeron's saving: a shadow polygon behind the visible point changes
+  /// nothing, so shadow polygons need no place in the spans' depth order,
+  /// nor in the x sort of the surfaces' edges, where tens of thousands of
+  /// them would cut the row into spans of a pixel or less). Each shadow
+  /// polygon covers the pixels between pairs of its own crossings of the
+  /// row; at each such pixel with a visible point it is compared with that
+  /// point alone. Then the strips round every edge are flagged.
+  /// shadow_crossings_ is kept in edge order, which groups each polygon's
+  /// edges together; [0, carried) was so ordered on the row before.
+  void scan_shadows(int j, std::size_t carried) {
+    const int width = scene_.camera.frame.width;
+    const auto middle = shadow_crossings_.begin() + static_cast<std::ptrdiff_t>(carried);
+    const auto by_edge = [](const Crossing& a, const Crossing& b) { return a.edge < b.edge; };
+    std::sort(middle, shadow_crossings_.end(), by_edge);
+    std::inplace_merge(shadow_crossings_.begin(), middle, shadow_crossings_.end(), by_edge);
+    for (std::size_t k = 0; k < shadow_crossings_.size();) {
+      const std::uint32_t polygon = shadow_crossings_[k].polygon;
+      columns_.clear();
+      for (; k < shadow_crossings_.size() && shadow_crossings_[k].polygon == polygon; ++k) {
+        const double x = crossing_x(shadow_crossings_[k], j);
+        columns_.push_back(clamp_column(std::ceil(x - 0.5), width));
+      }
+      // Pixel i is inside when an odd number of the polygon's crossings lie
+      // at columns <= i: the even-odd rule of the span walk, whose spans
+      // start at these columns. So: the pixels between consecutive pairs.
+      std::sort(columns_.begin(), columns_.end());
+      for (std::size_t m = 0; m < columns_.size(); m += 2)
+        shade_shadow(polygon, columns_[m], m + 1 < columns_.size() ? columns_[m + 1] : width, j);
+    }
+    count_groups(j);
     flag_near_edges(j);
     flag_degenerate(j);
   }
 
-  void toggle(std::uint32_t polygon, bool shadow) {
-    std::vector<std::uint32_t>& list = shadow ? shadows_ : surfaces_;
+  void toggle(std::uint32_t polygon) {
+    std::vector<std::uint32_t>& list = surfaces_;
     if (inside_[polygon]) {
       inside_[polygon] = 0;
       const std::uint32_t last = list.back();
@@ -349,9 +384,7 @@ class Band {
 
   /// One span. Its surfaces keep a depth-ordered list, re-sorted pixel to
   /// pixel by insertion (depths along a span change little); the first with
-  /// t > 0 is visible. Shadow polygons are not inserted: one behind the
-  /// visible point changes nothing, so each is only compared with it
-  /// (Bergeron's saving), which also makes their mutual order irrelevant.
+  /// t > 0 is visible.
   void shade_span(int i0, int i1, int j) {
     const double z_near = scene_.camera.z_near;
     order_.clear();
@@ -385,36 +418,61 @@ class Band {
       };
       for (const DepthEntry& e : order_) check(e);
       if (visible) {
-        for (std::uint32_t k : shadows_) {
-          DepthEntry e{0, 0, k};
-          measure(e, d);
-          check(e);
-          if (!(e.t > 0 && e.t < visible->t)) continue;
-          const ProjectedPolygon& polygon = scene_.polygons[k];
-          if (polygon.group < 0) {
-            result_.count[p * scene_.lights + polygon.light] += polygon.weight;
-          } else {
-            flags_[static_cast<std::size_t>(polygon.group)] ^= 1;
-            toggled_.push_back(&polygon);
-          }
-        }
-      }
-      // Each group whose flag ended other than it started changes the count
-      // by one; the flags are restored for the next pixel.
-      for (const ProjectedPolygon* t : toggled_) {
-        const auto g = static_cast<std::size_t>(t->group);
-        if (flags_[g] != scene_.group_start[g])
-          result_.count[p * scene_.lights + t->light] += flags_[g] ? 1 : -1;
-        flags_[g] = scene_.group_start[g];
-      }
-      toggled_.clear();
-      if (visible) {
         result_.visible[p] = scene_.polygons[visible->polygon].id;
         result_.depth[p] = visible->t;
         visible_error_[i] = visible->err;
       }
       if (uncertain) result_.uncertain[p] = 1;
     }
+  }
+
+  /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
+  /// point is visible, the polygon adds its weight to its light's count if
+  /// it lies between the eye and that point (a twisted one toggles its
+  /// group's flag instead, counted by count_groups). Its depth there, against
+  /// 0 and against the visible depth, must be clear of both error bounds, or
+  /// the pixel is uncertain.
+  void shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
+    const ProjectedPolygon& shadow = scene_.polygons[polygon];
+    const double z_near = scene_.camera.z_near;
+    for (int i = i0; i < i1; ++i) {
+      const std::size_t p = pixel(i, j);
+      if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
+      DepthEntry e{0, 0, polygon};
+      measure(e, ray_[i]);
+      const double t_visible = result_.depth[p];
+      if (!std::isfinite(e.err) || too_close(e.t, e.err, 0.0, 0.0, z_near) ||
+          too_close(e.t, e.err, t_visible, visible_error_[i], z_near))
+        result_.uncertain[p] = 1;
+      if (!(e.t > 0 && e.t < t_visible)) continue;
+      if (shadow.group < 0)
+        result_.count[p * scene_.lights + shadow.light] += shadow.weight;
+      else
+        group_hits_.push_back({static_cast<std::uint32_t>(i), polygon});
+    }
+  }
+
+  /// Twisted polygons crossed in front of the visible point, per pixel: each
+  /// group whose flag ends other than it started (an odd number of its
+  /// polygons crossed) changes its light's count by one, +1 where the flag is
+  /// set at the hit, -1 where it is cleared.
+  void count_groups(int j) {
+    std::sort(group_hits_.begin(), group_hits_.end());
+    for (std::size_t k = 0; k < group_hits_.size();) {
+      const std::uint32_t i = group_hits_[k].first;
+      std::size_t end = k;
+      for (; end < group_hits_.size() && group_hits_[end].first == i; ++end)
+        flags_[static_cast<std::size_t>(scene_.polygons[group_hits_[end].second].group)] ^= 1;
+      const std::size_t p = pixel(static_cast<int>(i), j);
+      for (; k < end; ++k) {
+        const ProjectedPolygon& t = scene_.polygons[group_hits_[k].second];
+        const auto g = static_cast<std::size_t>(t.group);
+        if (flags_[g] != scene_.group_start[g])
+          result_.count[p * scene_.lights + t.light] += flags_[g] ? 1 : -1;
+        flags_[g] = scene_.group_start[g];  // restored for the next pixel
+      }
+    }
+    group_hits_.clear();
   }
 
   /// The span walk above decides, for each polygon and pixel, on which side of
@@ -506,19 +564,21 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
-  std::uint64_t spans_ = 0;              // spans shaded by this band
-  std::vector<Crossing> crossings_;      // the active edge list, x-sorted
-  std::vector<NearEdge> near_edges_;     // edges whose strip meets the row
-  std::vector<std::uint8_t> inside_;     // per polygon: even-odd state along the row
-  std::vector<std::uint32_t> slot_;      // per polygon: its place in surfaces_ or shadows_
-  std::vector<std::uint32_t> surfaces_;  // surfaces inside at the current span
-  std::vector<std::uint32_t> shadows_;   // shadow polygons inside at the current span
-  std::vector<DepthEntry> order_;        // the span's depth-ordered list
-  std::vector<Vec3> ray_;                // the row's sample directions in camera space
-  std::vector<double> ray_length_;       // their lengths
-  std::vector<double> visible_error_;    // depth error bound of each pixel's visible hit
-  std::vector<std::uint8_t> flags_;      // per twisted group: its flag along the current ray
-  std::vector<const ProjectedPolygon*> toggled_;  // twisted shadow polygons crossed at this pixel
+  std::uint64_t spans_ = 0;                 // spans shaded by this band
+  std::vector<Crossing> crossings_;         // the surfaces' active edge list, x-sorted
+  std::vector<Crossing> shadow_crossings_;  // the shadow polygons' active edges, in edge order
+  std::vector<int> columns_;                // one shadow polygon's crossing columns on the row
+  std::vector<NearEdge> near_edges_;        // edges whose strip meets the row
+  std::vector<std::uint8_t> inside_;        // per polygon: even-odd state along the row
+  std::vector<std::uint32_t> slot_;         // per polygon: its place in surfaces_
+  std::vector<std::uint32_t> surfaces_;     // surfaces inside at the current span
+  std::vector<DepthEntry> order_;           // the span's depth-ordered list
+  std::vector<Vec3> ray_;                   // the row's sample directions in camera space
+  std::vector<double> ray_length_;          // their lengths
+  std::vector<double> visible_error_;       // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;         // per twisted group: its flag along the current ray
+  // (column, polygon): twisted shadow polygons crossed in front of the visible point on the row
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> group_hits_;
 };
 
 }  // namespace
