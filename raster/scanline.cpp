@@ -230,6 +230,7 @@ class Band {
     double margin;  ///< TableEdge::near_margin
     std::uint32_t polygon;
     int last;  ///< last row of the strip
+    bool shadow;
   };
 
   /// Edge k enters the surfaces' or the shadow polygons' active list.
@@ -242,6 +243,7 @@ class Band {
   NearEdge make_near_edge(std::uint32_t k) const {
     const TableEdge& t = scene_.edges[k];
     const ProjectedEdge& e = t.edge;
+    const bool shadow = scene_.polygons[e.polygon].kind == RasterPolygon::Kind::shadow;
     return {e.m,
             std::hypot(e.m.x, e.m.y),
             1e-12 * e.m_scale,
@@ -253,7 +255,8 @@ class Band {
             e.err_b,
             t.near_margin,
             e.polygon,
-            t.near.last};
+            t.near.last,
+            shadow};
   }
 
   std::size_t pixel(int i, int j) const {
@@ -438,13 +441,23 @@ class Band {
     for (int i = i0; i < i1; ++i) {
       const std::size_t p = pixel(i, j);
       if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
-      DepthEntry e{0, 0, polygon};
-      measure(e, ray_[i]);
+      const Vec3& d = ray_[i];
+      double t = shadow.depth(d);
+      if (std::isnan(t)) t = kInfinity;  // ray in the plane; flagged by its error
       const double t_visible = result_.depth[p];
-      if (!std::isfinite(e.err) || too_close(e.t, e.err, 0.0, 0.0, z_near) ||
-          too_close(e.t, e.err, t_visible, visible_error_[i], z_near))
+      const auto unclear = [&](double err) {
+        return !std::isfinite(err) || too_close(t, err, 0.0, 0.0, z_near) ||
+               too_close(t, err, t_visible, visible_error_[i], z_near);
+      };
+      // depth_error measures |t·d − p0| (a square root); first try the bound
+      // with |t|·|d| + |p0| in its place, which is at least as large (the
+      // factor covers both lengths' rounding). The error bound grows with that
+      // distance and too_close with the error, so a depth clear of this
+      // larger bound is clear of depth_error's: the decision is the same.
+      const double offset_bound = (std::abs(t) * ray_length_[i] + shadow.p0_length) * (1 + 1e-9);
+      if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
         result_.uncertain[p] = 1;
-      if (!(e.t > 0 && e.t < t_visible)) continue;
+      if (!(t > 0 && t < t_visible)) continue;
       if (shadow.group < 0)
         result_.count[p * scene_.lights + shadow.light] += shadow.weight;
       else
@@ -523,6 +536,9 @@ class Band {
       for (int i = i0; i < i1; ++i) {
         const std::size_t p = pixel(i, j);
         if (result_.uncertain[p]) continue;
+        // Where nothing is seen a shadow polygon changes nothing (matters()),
+        // decided here before the distance test.
+        if (e.shadow && result_.visible[p] < 0) continue;
         const Vec3& d = ray_[i];
         const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * e.hyp +
                                  e.rounding * ray_length_[i];
