@@ -1,14 +1,22 @@
 // Bouknight's scanline algorithm with Crow's shadow polygons in the same
-// sorts (Bergeron 1986, "Displaying shadows in image space"):
+// y sort (Bergeron 1986, "Displaying shadows in image space"):
 //   1. every polygon goes to camera space, is clipped at z = z_near and
 //      projected (projected_polygon.cpp);
-//   2. a y bucket sort of the edges by their first scanline; per scanline an
-//      active edge list kept by scanline coherence, its crossings x-sorted by
-//      insertion sort (nearly sorted from the previous line), spans between
-//      consecutive crossings, each polygon toggled even-odd at its crossings;
-//   3. in each span a depth-ordered list of its active polygons, re-sorted by
-//      insertion at every pixel (point-to-point coherence): the first surface
-//      is visible, each shadow polygon before it adds its signed Nb_C.
+//   2. a y bucket sort of the edges by their first scanline; per scanline
+//      two active edge lists kept by scanline coherence, one for surfaces,
+//      one for shadow polygons; every list carries the edge's hot data
+//      inline, since with many lights tens of thousands of shadow edges
+//      cross every row and a walk through indices misses the cache on each;
+//   3. surfaces: crossings x-sorted by insertion sort (nearly sorted from
+//      the previous line), spans between consecutive crossings, each surface
+//      toggled even-odd; in each span a depth-ordered list of its surfaces,
+//      re-sorted by insertion at every pixel (point-to-point coherence): the
+//      first is visible;
+//   4. shadow polygons, once the row's visible points are known (Bergeron's
+//      saving: one behind the visible point changes nothing, so they need no
+//      place in the depth order nor in the spans): each covers the pixels
+//      between pairs of its own crossings and adds its signed Nb_C wherever
+//      it lies in front of the visible point.
 // Then, per scanline, every pixel that a floating-point decision could have
 // got wrong is flagged `uncertain`; the bounds are stated where they are used.
 #include <raster/projected_polygon.h>
