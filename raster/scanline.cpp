@@ -117,6 +117,11 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
   const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
+  // Reserved: with many lights the table holds 100k+ edges, and growing it
+  // step by step copies them over and over on the one thread that prepares.
+  std::size_t edge_count = 0;
+  for (const ProjectedPolygon& polygon : scene.polygons) edge_count += polygon.edges.size();
+  scene.edges.reserve(edge_count);
   for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
     const ProjectedPolygon& polygon = scene.polygons[k];
     if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
