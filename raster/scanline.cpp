@@ -214,7 +214,17 @@ class Band {
         for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
           near_edges_.push_back(make_near_edge(scene_.by_near_row[k]));
       }
-      std::erase_if(near_edges_, [&](const NearEdge& e) { return e.last < j; });
+      // Strips flag pixels independently of each other, so their order is
+      // free: an ended strip takes the last one's place instead of every
+      // later strip moving down one.
+      for (std::size_t k = 0; k < near_edges_.size();) {
+        if (near_edges_[k].last >= j) {
+          ++k;
+          continue;
+        }
+        near_edges_[k] = near_edges_.back();
+        near_edges_.pop_back();
+      }
       scan_row(j, carried);
       scan_shadows(j, shadows_carried);
       if (progress_) progress_->advance();
