@@ -72,9 +72,13 @@ double ProjectedPolygon::depth_error(const Vec3& d_cam, double t) const {
   //   C · ε · (mag + |X − P0|) · (|n| + size·|X − P0|) / |n·d|
   // with C a small multiple of the vertex count; we take C·ε = 1e-12 · count,
   // i.e. C ≈ 9000·count: generous, since a false "uncertain" only costs time.
+  if (!std::isfinite(t)) return std::numeric_limits<double>::infinity();
+  return depth_error_at(d_cam, length(t * d_cam - p0));
+}
+
+double ProjectedPolygon::depth_error_at(const Vec3& d_cam, double offset) const {
   const double denominator = std::abs(dot(n, d_cam));
-  if (!(denominator > 0) || !std::isfinite(t)) return std::numeric_limits<double>::infinity();
-  const double offset = length(t * d_cam - p0);
+  if (!(denominator > 0) || !std::isfinite(offset)) return std::numeric_limits<double>::infinity();
   return 1e-12 * vertex_count * (mag + offset) * (n_length + size * offset) / denominator;
 }
 
@@ -114,6 +118,7 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   out.n = n;
   out.n_length = length(n);
   out.n_dot_p0 = dot(n, p[0]);
+  out.p0_length = length(p[0]);
 
   // Eye side, from the right-handed (Newell / fan) normal in world space:
   // +nb_c when dot(n, eye − v0) > 0, i.e. the eye sees the vertices run

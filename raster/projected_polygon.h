@@ -83,6 +83,7 @@ struct ProjectedPolygon {
   Vec3 n;
   Vec3 p0;
   double n_dot_p0 = 0;
+  double p0_length = 0;  ///< |p0|
   double n_length = 0;
   double size = 0;  ///< max |P_i − P0| over the camera-space vertices
   /// Magnitude of everything the camera-space vertices were computed from:
@@ -100,6 +101,10 @@ struct ProjectedPolygon {
   /// A bound on |t − t_exact| for depth(d_cam) = t (infinite when the ray is
   /// parallel to the plane). See the derivation in projected_polygon.cpp.
   double depth_error(const Vec3& d_cam, double t) const;
+  /// The same bound with `offset` in place of |t·d − p0|; it grows with
+  /// `offset`, so any offset at least that distance gives a bound at least
+  /// depth_error's (infinite when offset is not finite).
+  double depth_error_at(const Vec3& d_cam, double offset) const;
 };
 
 /// Prepares polygons[index]. Throws std::invalid_argument on non-finite vertices.

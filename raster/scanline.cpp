@@ -1,14 +1,22 @@
 // Bouknight's scanline algorithm with Crow's shadow polygons in the same
-// sorts (Bergeron 1986, "Displaying shadows in image space"):
+// y sort (Bergeron 1986, "Displaying shadows in image space"):
 //   1. every polygon goes to camera space, is clipped at z = z_near and
 //      projected (projected_polygon.cpp);
-//   2. a y bucket sort of the edges by their first scanline; per scanline an
-//      active edge list kept by scanline coherence, its crossings x-sorted by
-//      insertion sort (nearly sorted from the previous line), spans between
-//      consecutive crossings, each polygon toggled even-odd at its crossings;
-//   3. in each span a depth-ordered list of its active polygons, re-sorted by
-//      insertion at every pixel (point-to-point coherence): the first surface
-//      is visible, each shadow polygon before it adds its signed Nb_C.
+//   2. a y bucket sort of the edges by their first scanline; per scanline
+//      two active edge lists kept by scanline coherence, one for surfaces,
+//      one for shadow polygons; every list carries the edge's hot data
+//      inline, since with many lights tens of thousands of shadow edges
+//      cross every row and a walk through indices misses the cache on each;
+//   3. surfaces: crossings x-sorted by insertion sort (nearly sorted from
+//      the previous line), spans between consecutive crossings, each surface
+//      toggled even-odd; in each span a depth-ordered list of its surfaces,
+//      re-sorted by insertion at every pixel (point-to-point coherence): the
+//      first is visible;
+//   4. shadow polygons, once the row's visible points are known (Bergeron's
+//      saving: one behind the visible point changes nothing, so they need no
+//      place in the depth order nor in the spans): each covers the pixels
+//      between pairs of its own crossings and adds its signed Nb_C wherever
+//      it lies in front of the visible point.
 // Then, per scanline, every pixel that a floating-point decision could have
 // got wrong is flagged `uncertain`; the bounds are stated where they are used.
 #include <raster/projected_polygon.h>
@@ -109,6 +117,11 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
   const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
+  // Reserved: with many lights the table holds 100k+ edges, and growing it
+  // step by step copies them over and over on the one thread that prepares.
+  std::size_t edge_count = 0;
+  for (const ProjectedPolygon& polygon : scene.polygons) edge_count += polygon.edges.size();
+  scene.edges.reserve(edge_count);
   for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
     const ProjectedPolygon& polygon = scene.polygons[k];
     if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
@@ -175,40 +188,99 @@ class Band {
   void run(int row0, int row1) {
     const int width = scene_.camera.frame.width;
     ray_.resize(width);
+    ray_length_.resize(width);
     visible_error_.resize(width);
-    // Start the active edge list at row0: every edge active there.
+    // Start the active edge lists at row0: every edge active there.
     for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
       const std::uint32_t e = scene_.by_scan_row[k];
-      if (scene_.edges[e].scan.last >= row0) crossings_.push_back({0, e});
+      if (scene_.edges[e].scan.last >= row0) activate(e);
     }
     for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k) {
       const std::uint32_t e = scene_.by_near_row[k];
-      if (scene_.edges[e].near.last >= row0) near_edges_.push_back(e);
+      if (scene_.edges[e].near.last >= row0) near_edges_.push_back(make_near_edge(e));
     }
     for (int j = row0; j < row1; ++j) {
-      std::erase_if(crossings_,
-                    [&](const Crossing& c) { return scene_.edges[c.edge].scan.last < j; });
+      const auto ended = [&](const Crossing& c) { return c.last < j; };
+      std::erase_if(crossings_, ended);
+      std::erase_if(shadow_crossings_, ended);
       // Edges carried over from the previous row stay nearly sorted; the
       // row's new edges are sorted apart and merged in (appending them to an
       // insertion sort would move each across the whole list).
       const std::size_t carried = j > row0 ? crossings_.size() : 0;
+      const std::size_t shadows_carried = j > row0 ? shadow_crossings_.size() : 0;
       if (j > row0) {
         for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
-          crossings_.push_back({0, scene_.by_scan_row[k]});
+          activate(scene_.by_scan_row[k]);
         for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
-          near_edges_.push_back(scene_.by_near_row[k]);
+          near_edges_.push_back(make_near_edge(scene_.by_near_row[k]));
       }
-      std::erase_if(near_edges_, [&](std::uint32_t e) { return scene_.edges[e].near.last < j; });
+      // Strips flag pixels independently of each other, so their order is
+      // free: an ended strip takes the last one's place instead of every
+      // later strip moving down one.
+      for (std::size_t k = 0; k < near_edges_.size();) {
+        if (near_edges_[k].last >= j) {
+          ++k;
+          continue;
+        }
+        near_edges_[k] = near_edges_.back();
+        near_edges_.pop_back();
+      }
       scan_row(j, carried);
+      scan_shadows(j, shadows_carried);
       if (progress_) progress_->advance();
     }
   }
 
  private:
+  /// An edge in the active edge list. What every row reads is copied in
+  /// (the line, the polygon, its kind, the last row) so that the walk over
+  /// tens of thousands of shadow edges per row reads one array front to back
+  /// instead of missing the cache on the edge table and the polygons.
   struct Crossing {
     double x;
+    Vec3 m;  ///< the edge's homogeneous line (ProjectedEdge::m)
     std::uint32_t edge;
+    std::uint32_t polygon;
+    int last;  ///< last active row
   };
+  /// An edge whose uncertainty strip meets the row, with everything
+  /// flag_near_edges reads (copied for the same reason as Crossing).
+  struct NearEdge {
+    Vec3 m;
+    double hyp;       ///< |(m.x, m.y)|
+    double rounding;  ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
+    double xa, ya, xb, yb, err_a, err_b;
+    double margin;  ///< TableEdge::near_margin
+    std::uint32_t polygon;
+    int last;  ///< last row of the strip
+    bool shadow;
+  };
+
+  /// Edge k enters the surfaces' or the shadow polygons' active list.
+  void activate(std::uint32_t k) {
+    const TableEdge& t = scene_.edges[k];
+    const bool shadow = scene_.polygons[t.edge.polygon].kind == RasterPolygon::Kind::shadow;
+    (shadow ? shadow_crossings_ : crossings_)
+        .push_back({0, t.edge.m, k, t.edge.polygon, t.scan.last});
+  }
+  NearEdge make_near_edge(std::uint32_t k) const {
+    const TableEdge& t = scene_.edges[k];
+    const ProjectedEdge& e = t.edge;
+    const bool shadow = scene_.polygons[e.polygon].kind == RasterPolygon::Kind::shadow;
+    return {e.m,
+            std::hypot(e.m.x, e.m.y),
+            1e-12 * e.m_scale,
+            e.xa,
+            e.ya,
+            e.xb,
+            e.yb,
+            e.err_a,
+            e.err_b,
+            t.near_margin,
+            e.polygon,
+            t.near.last,
+            shadow};
+  }
 
   std::size_t pixel(int i, int j) const {
     return static_cast<std::size_t>(j) * scene_.camera.frame.width + static_cast<std::size_t>(i);
@@ -217,23 +289,27 @@ class Band {
   /// Pixel x at which edge e crosses row j's centre line, from the edge's
   /// homogeneous line (well conditioned even when an endpoint was clipped far
   /// off screen); endpoint interpolation only for a line with m.x = 0.
-  double crossing_x(const ProjectedEdge& e, int j) const {
+  double crossing_x(const Crossing& c, int j) const {
     const double sy = scene_.camera.row_screen_y(j);
-    const double sx = -(e.m.y * sy + e.m.z) / e.m.x;
+    const double sx = -(c.m.y * sy + c.m.z) / c.m.x;
     double x = scene_.camera.pixel_x(sx);
     if (!std::isfinite(x)) {
+      const ProjectedEdge& e = scene_.edges[c.edge].edge;
       const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
       x = e.xa + lambda * (e.xb - e.xa);
     }
     return x;
   }
 
-  /// Row j; crossings_[0, carried) were active on the row before.
+  /// Row j's surfaces: visible polygon, depth and their uncertainty;
+  /// crossings_[0, carried) were active on the row before. The shadow
+  /// polygons are counted afterwards (scan_shadows).
   void scan_row(int j, std::size_t carried) {
     const CameraSpace& camera = scene_.camera;
     const int width = camera.frame.width;
     for (int i = 0; i < width; ++i) {
       ray_[i] = camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
+      ray_length_[i] = length(ray_[i]);
       const std::size_t p = pixel(i, j);
       result_.visible[p] = -1;
       result_.depth[p] = kInfinity;
@@ -244,7 +320,7 @@ class Band {
     // x sort: insertion sort of the carried crossings (nearly sorted since
     // the previous row), the new ones sorted apart, then one merge.
 
-    for (Crossing& c : crossings_) c.x = crossing_x(scene_.edges[c.edge].edge, j);
+    for (Crossing& c : crossings_) c.x = crossing_x(c, j);
     const auto less = [](const Crossing& a, const Crossing& b) {
       return a.x < b.x || (a.x == b.x && a.edge < b.edge);
     };
@@ -259,9 +335,8 @@ class Band {
     std::inplace_merge(crossings_.begin(), middle, crossings_.end(), less);
     // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
     for (std::size_t k = 0; k < crossings_.size(); ++k) {
-      toggle(scene_.edges[crossings_[k].edge].edge.polygon);
-      // A span without surfaces is background whatever shadow polygons cross
-      // it (Crow's saving): nothing to do.
+      toggle(crossings_[k].polygon);
+      // A span without surfaces is background: nothing to do.
       if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
       const int i0 = clamp_column(std::ceil(crossings_[k].x - 0.5), width);
       const int i1 = clamp_column(std::ceil(crossings_[k + 1].x - 0.5), width);
@@ -273,17 +348,46 @@ class Band {
     // Each polygon has an even number of active edges on a row, so every
     // toggle is undone by now; clear anyway so one bad row cannot leak.
     for (std::uint32_t polygon : surfaces_) inside_[polygon] = 0;
-    for (std::uint32_t polygon : shadows_) inside_[polygon] = 0;
     surfaces_.clear();
-    shadows_.clear();
+  }
 
+  /// Row j's shadow polygons, once its visible points are known
+  /// (Bergeron's saving: a shadow polygon behind the visible point changes
+  /// nothing, so shadow polygons need no place in the spans' depth order,
+  /// nor in the x sort of the surfaces' edges, where tens of thousands of
+  /// them would cut the row into spans of a pixel or less). Each shadow
+  /// polygon covers the pixels between pairs of its own crossings of the
+  /// row; at each such pixel with a visible point it is compared with that
+  /// point alone. Then the strips round every edge are flagged.
+  /// shadow_crossings_ is kept in edge order, which groups each polygon's
+  /// edges together; [0, carried) was so ordered on the row before.
+  void scan_shadows(int j, std::size_t carried) {
+    const int width = scene_.camera.frame.width;
+    const auto middle = shadow_crossings_.begin() + static_cast<std::ptrdiff_t>(carried);
+    const auto by_edge = [](const Crossing& a, const Crossing& b) { return a.edge < b.edge; };
+    std::sort(middle, shadow_crossings_.end(), by_edge);
+    std::inplace_merge(shadow_crossings_.begin(), middle, shadow_crossings_.end(), by_edge);
+    for (std::size_t k = 0; k < shadow_crossings_.size();) {
+      const std::uint32_t polygon = shadow_crossings_[k].polygon;
+      columns_.clear();
+      for (; k < shadow_crossings_.size() && shadow_crossings_[k].polygon == polygon; ++k) {
+        const double x = crossing_x(shadow_crossings_[k], j);
+        columns_.push_back(clamp_column(std::ceil(x - 0.5), width));
+      }
+      // Pixel i is inside when an odd number of the polygon's crossings lie
+      // at columns <= i: the even-odd rule of the span walk, whose spans
+      // start at these columns. So: the pixels between consecutive pairs.
+      std::sort(columns_.begin(), columns_.end());
+      for (std::size_t m = 0; m < columns_.size(); m += 2)
+        shade_shadow(polygon, columns_[m], m + 1 < columns_.size() ? columns_[m + 1] : width, j);
+    }
+    count_groups(j);
     flag_near_edges(j);
     flag_degenerate(j);
   }
 
   void toggle(std::uint32_t polygon) {
-    std::vector<std::uint32_t>& list =
-        scene_.polygons[polygon].kind == RasterPolygon::Kind::shadow ? shadows_ : surfaces_;
+    std::vector<std::uint32_t>& list = surfaces_;
     if (inside_[polygon]) {
       inside_[polygon] = 0;
       const std::uint32_t last = list.back();
@@ -306,9 +410,7 @@ class Band {
 
   /// One span. Its surfaces keep a depth-ordered list, re-sorted pixel to
   /// pixel by insertion (depths along a span change little); the first with
-  /// t > 0 is visible. Shadow polygons are not inserted: one behind the
-  /// visible point changes nothing, so each is only compared with it
-  /// (Bergeron's saving), which also makes their mutual order irrelevant.
+  /// t > 0 is visible.
   void shade_span(int i0, int i1, int j) {
     const double z_near = scene_.camera.z_near;
     order_.clear();
@@ -342,36 +444,71 @@ class Band {
       };
       for (const DepthEntry& e : order_) check(e);
       if (visible) {
-        for (std::uint32_t k : shadows_) {
-          DepthEntry e{0, 0, k};
-          measure(e, d);
-          check(e);
-          if (!(e.t > 0 && e.t < visible->t)) continue;
-          const ProjectedPolygon& polygon = scene_.polygons[k];
-          if (polygon.group < 0) {
-            result_.count[p * scene_.lights + polygon.light] += polygon.weight;
-          } else {
-            flags_[static_cast<std::size_t>(polygon.group)] ^= 1;
-            toggled_.push_back(&polygon);
-          }
-        }
-      }
-      // Each group whose flag ended other than it started changes the count
-      // by one; the flags are restored for the next pixel.
-      for (const ProjectedPolygon* t : toggled_) {
-        const auto g = static_cast<std::size_t>(t->group);
-        if (flags_[g] != scene_.group_start[g])
-          result_.count[p * scene_.lights + t->light] += flags_[g] ? 1 : -1;
-        flags_[g] = scene_.group_start[g];
-      }
-      toggled_.clear();
-      if (visible) {
         result_.visible[p] = scene_.polygons[visible->polygon].id;
         result_.depth[p] = visible->t;
         visible_error_[i] = visible->err;
       }
       if (uncertain) result_.uncertain[p] = 1;
     }
+  }
+
+  /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
+  /// point is visible, the polygon adds its weight to its light's count if
+  /// it lies between the eye and that point (a twisted one toggles its
+  /// group's flag instead, counted by count_groups). Its depth there, against
+  /// 0 and against the visible depth, must be clear of both error bounds, or
+  /// the pixel is uncertain.
+  void shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
+    const ProjectedPolygon& shadow = scene_.polygons[polygon];
+    const double z_near = scene_.camera.z_near;
+    for (int i = i0; i < i1; ++i) {
+      const std::size_t p = pixel(i, j);
+      if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
+      const Vec3& d = ray_[i];
+      double t = shadow.depth(d);
+      if (std::isnan(t)) t = kInfinity;  // ray in the plane; flagged by its error
+      const double t_visible = result_.depth[p];
+      const auto unclear = [&](double err) {
+        return !std::isfinite(err) || too_close(t, err, 0.0, 0.0, z_near) ||
+               too_close(t, err, t_visible, visible_error_[i], z_near);
+      };
+      // depth_error measures |t·d − p0| (a square root); first try the bound
+      // with |t|·|d| + |p0| in its place, which is at least as large (the
+      // factor covers both lengths' rounding). The error bound grows with that
+      // distance and too_close with the error, so a depth clear of this
+      // larger bound is clear of depth_error's: the decision is the same.
+      const double offset_bound = (std::abs(t) * ray_length_[i] + shadow.p0_length) * (1 + 1e-9);
+      if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
+        result_.uncertain[p] = 1;
+      if (!(t > 0 && t < t_visible)) continue;
+      if (shadow.group < 0)
+        result_.count[p * scene_.lights + shadow.light] += shadow.weight;
+      else
+        group_hits_.push_back({static_cast<std::uint32_t>(i), polygon});
+    }
+  }
+
+  /// Twisted polygons crossed in front of the visible point, per pixel: each
+  /// group whose flag ends other than it started (an odd number of its
+  /// polygons crossed) changes its light's count by one, +1 where the flag is
+  /// set at the hit, -1 where it is cleared.
+  void count_groups(int j) {
+    std::sort(group_hits_.begin(), group_hits_.end());
+    for (std::size_t k = 0; k < group_hits_.size();) {
+      const std::uint32_t i = group_hits_[k].first;
+      std::size_t end = k;
+      for (; end < group_hits_.size() && group_hits_[end].first == i; ++end)
+        flags_[static_cast<std::size_t>(scene_.polygons[group_hits_[end].second].group)] ^= 1;
+      const std::size_t p = pixel(static_cast<int>(i), j);
+      for (; k < end; ++k) {
+        const ProjectedPolygon& t = scene_.polygons[group_hits_[k].second];
+        const auto g = static_cast<std::size_t>(t.group);
+        if (flags_[g] != scene_.group_start[g])
+          result_.count[p * scene_.lights + t.light] += flags_[g] ? 1 : -1;
+        flags_[g] = scene_.group_start[g];  // restored for the next pixel
+      }
+    }
+    group_hits_.clear();
   }
 
   /// The span walk above decides, for each polygon and pixel, on which side of
@@ -397,13 +534,11 @@ class Band {
     const CameraSpace& camera = scene_.camera;
     const int width = camera.frame.width;
     const double row_y = j + 0.5;
-    for (std::uint32_t k : near_edges_) {
-      const TableEdge& table_edge = scene_.edges[k];
-      const ProjectedEdge& e = table_edge.edge;
+    for (const NearEdge& e : near_edges_) {
       double extra = 0;
       if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
       if (std::abs(row_y - e.yb) <= e.err_b) extra = std::max(extra, e.err_b);
-      const double margin = table_edge.near_margin + extra;
+      const double margin = e.margin + extra;
       // Pixels of this row within `margin` of the segment: the segment's part
       // in the strip |y − row_y| ≤ margin, widened by margin.
       const double y_lo = row_y - margin, y_hi = row_y + margin;
@@ -421,16 +556,17 @@ class Band {
       }
       const int i0 = clamp_column(std::ceil(x_lo - margin - 0.5), width);
       const int i1 = clamp_column(std::floor(x_hi + margin - 0.5) + 1, width);
-      const ProjectedPolygon& polygon = scene_.polygons[e.polygon];
-      const double hyp = std::hypot(e.m.x, e.m.y);
       for (int i = i0; i < i1; ++i) {
         const std::size_t p = pixel(i, j);
         if (result_.uncertain[p]) continue;
+        // Where nothing is seen a shadow polygon changes nothing (matters()),
+        // decided here before the distance test.
+        if (e.shadow && result_.visible[p] < 0) continue;
         const Vec3& d = ray_[i];
-        const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * hyp +
-                                 1e-12 * e.m_scale * length(d);
+        const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * e.hyp +
+                                 e.rounding * ray_length_[i];
         if (std::abs(dot(e.m, d)) > threshold) continue;
-        if (matters(polygon, i, p)) result_.uncertain[p] = 1;
+        if (matters(scene_.polygons[e.polygon], i, p)) result_.uncertain[p] = 1;
       }
     }
   }
@@ -467,18 +603,21 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
-  std::uint64_t spans_ = 0;                // spans shaded by this band
-  std::vector<Crossing> crossings_;        // the active edge list, x-sorted
-  std::vector<std::uint32_t> near_edges_;  // edges whose strip meets the row
-  std::vector<std::uint8_t> inside_;       // per polygon: even-odd state along the row
-  std::vector<std::uint32_t> slot_;        // per polygon: its place in surfaces_ or shadows_
-  std::vector<std::uint32_t> surfaces_;    // surfaces inside at the current span
-  std::vector<std::uint32_t> shadows_;     // shadow polygons inside at the current span
-  std::vector<DepthEntry> order_;          // the span's depth-ordered list
-  std::vector<Vec3> ray_;                  // the row's sample directions in camera space
-  std::vector<double> visible_error_;      // depth error bound of each pixel's visible hit
-  std::vector<std::uint8_t> flags_;        // per twisted group: its flag along the current ray
-  std::vector<const ProjectedPolygon*> toggled_;  // twisted shadow polygons crossed at this pixel
+  std::uint64_t spans_ = 0;                 // spans shaded by this band
+  std::vector<Crossing> crossings_;         // the surfaces' active edge list, x-sorted
+  std::vector<Crossing> shadow_crossings_;  // the shadow polygons' active edges, in edge order
+  std::vector<int> columns_;                // one shadow polygon's crossing columns on the row
+  std::vector<NearEdge> near_edges_;        // edges whose strip meets the row
+  std::vector<std::uint8_t> inside_;        // per polygon: even-odd state along the row
+  std::vector<std::uint32_t> slot_;         // per polygon: its place in surfaces_
+  std::vector<std::uint32_t> surfaces_;     // surfaces inside at the current span
+  std::vector<DepthEntry> order_;           // the span's depth-ordered list
+  std::vector<Vec3> ray_;                   // the row's sample directions in camera space
+  std::vector<double> ray_length_;          // their lengths
+  std::vector<double> visible_error_;       // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;         // per twisted group: its flag along the current ray
+  // (column, polygon): twisted shadow polygons crossed in front of the visible point on the row
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> group_hits_;
 };
 
 }  // namespace

@@ -42,7 +42,9 @@ struct ScanlineResult {
   /// spans without a surface are skipped.
   std::vector<std::int32_t> count;
   std::vector<std::uint8_t> uncertain;
-  std::uint64_t spans = 0;  ///< spans shaded (those without a surface are skipped)
+  /// Spans shaded: runs of pixels between consecutive crossings of surface
+  /// edges that hold a surface (shadow polygons' edges cut no spans).
+  std::uint64_t spans = 0;
 };
 
 /// `group_start` holds every group's flag at the eye (0 or 1); polygons may
