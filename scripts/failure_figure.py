@@ -33,7 +33,7 @@ def main():
         ax.set_title(parts[1], fontsize=9)
     fig.text(0.5, 0.005, "red: false lit (light leaks)   cyan: false shadowed (acne, spurious "
              "shadow)   yellow: range disagrees", ha="center", fontsize=9)
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.tight_layout(rect=(0, 0.03, 1, 0.97))
     fig.savefig(out, dpi=100)
 
 
