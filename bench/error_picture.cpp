@@ -6,23 +6,6 @@
 
 namespace umbra::bench {
 
-using geometry::ShadowClass;
-
-namespace {
-
-/// The class a render's shadow.<i> value stands for (exact AOV values only;
-/// anything else counts as no class at all).
-ShadowClass class_of(float v, bool& valid) {
-  valid = true;
-  if (v == raster::kShadowLit) return ShadowClass::lit;
-  if (v == raster::kShadowShadowed) return ShadowClass::shadowed;
-  if (v == raster::kShadowOutOfRange) return ShadowClass::out_of_range;
-  valid = false;
-  return ShadowClass::lit;
-}
-
-}  // namespace
-
 std::vector<float> error_picture(const raster::Frame& frame, const raster::OracleTruth& truth) {
   std::vector<float> rgb(frame.beauty.size());
   for (std::size_t k = 0; k < rgb.size(); ++k) rgb[k] = 0.6f * raster::encode_srgb(frame.beauty[k]);
@@ -32,16 +15,19 @@ std::vector<float> error_picture(const raster::Frame& frame, const raster::Oracl
     int worst = 0;  // 3 false-lit, 2 false-shadowed, 1 wrong range
     for (std::size_t l = 0; l < truth.lights; ++l) {
       if (truth.boundary[k * truth.lights + l]) continue;
-      const ShadowClass expected = truth.cls[k * truth.lights + l];
-      bool valid = false;
-      const ShadowClass got = class_of(frame.shadow[l][p], valid);
-      if (valid && got == expected) continue;
-      if (valid && expected == ShadowClass::shadowed && got == ShadowClass::lit)
-        worst = std::max(worst, 3);
-      else if (valid && expected == ShadowClass::lit && got == ShadowClass::shadowed)
-        worst = std::max(worst, 2);
-      else
-        worst = std::max(worst, 1);
+      switch (raster::judge(truth.cls[k * truth.lights + l], frame.shadow[l][p])) {
+        case raster::Mistake::none:
+          break;
+        case raster::Mistake::false_lit:
+          worst = std::max(worst, 3);
+          break;
+        case raster::Mistake::false_shadowed:
+          worst = std::max(worst, 2);
+          break;
+        case raster::Mistake::wrong_range:
+          worst = std::max(worst, 1);
+          break;
+      }
     }
     const float* paint = worst == 3 ? kFalseLit : worst == 2 ? kFalseShadowed : kWrongRange;
     if (worst > 0) std::copy(paint, paint + 3, rgb.begin() + static_cast<std::ptrdiff_t>(3 * p));

@@ -1,3 +1,4 @@
+#include <raster/light_range.h>
 #include <raster/light_reach.h>
 
 #include <algorithm>
@@ -50,6 +51,13 @@ ReachTable::ReachTable(std::span<const RasterPolygon> surfaces,
     for (std::size_t l = 0; l < lights_; ++l)
       reach_[static_cast<std::size_t>(p.id) * lights_ + l] = reach_of(p, lights[l]);
   }
+}
+
+bool ReachTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
+                              const geometry::SampleRay& ray,
+                              const geometry::HitTriangle& tri) const {
+  const Reach r = at(surface, l);
+  return r == Reach::outside || (r == Reach::cut && raster::out_of_range(light, ray, tri));
 }
 
 }  // namespace umbra::raster

@@ -4,7 +4,9 @@
 // surface wholly inside or outside the sphere needs no range predicate at
 // all. With many lights of small reach (Bergeron's street lights) nearly
 // every pair is one of the first two.
+#include <geometry/sample_ray.h>
 #include <geometry/scene.h>
+#include <geometry/visible_surface.h>
 #include <raster/scanline.h>
 
 #include <cstdint>
@@ -28,6 +30,12 @@ class ReachTable {
   Reach at(std::uint32_t surface, std::uint32_t light) const {
     return reach_[static_cast<std::size_t>(surface) * lights_ + light];
   }
+
+  /// Whether the sample of `ray` on `tri`, a triangle of surface `surface`,
+  /// is out of range of `light` (index `l`): from the table, and with the
+  /// exact predicate (light_range.h) only where the sphere cuts the surface.
+  bool out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
+                    const geometry::SampleRay& ray, const geometry::HitTriangle& tri) const;
 
  private:
   std::size_t lights_ = 0;

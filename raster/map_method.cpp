@@ -8,6 +8,7 @@
 //   3. decide pass: each remaining (sample, light) looked up (shadow_lookup.h).
 #include <geometry/exact_predicates.h>
 #include <raster/light_range.h>
+#include <raster/light_reach.h>
 #include <raster/parallel_rows.h>
 #include <raster/phase_clock.h>
 #include <raster/pixel_sample.h>
@@ -21,6 +22,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -104,6 +106,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   // 1. The visible surface, as Method::volume finds it.
   auto start = Clock::now();
   const SurfaceTable table = surface_table(index);
+  const ReachTable reach(table.polygons, scene.lights);
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
   const ScanlineResult scan =
       scanline_render(camera, table.polygons, 0, options.threads, {}, &progress);
@@ -127,9 +130,11 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       VisibleSample& s = visible[pixel];
       geometry::SurfaceHit hit;
+      std::optional<std::uint32_t> entry_id;  ///< the scanline's entry, where it decided
       if (!scan.uncertain[pixel]) {
         if (scan.visible[pixel] < 0) continue;
-        const SurfaceEntry& entry = table.entries[static_cast<std::size_t>(scan.visible[pixel])];
+        entry_id = static_cast<std::uint32_t>(scan.visible[pixel]);
+        const SurfaceEntry& entry = table.entries[*entry_id];
         hit = entry.hit;
         s.t = scan.depth[pixel];
         s.normal = entry.normal;
@@ -151,7 +156,8 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       for (std::uint32_t l = 0; l < lights; ++l) {
         const geometry::Light& light = scene.lights[l];
         Decided& d = decided[pixel * lights + l];
-        if (out_of_range(light, ray, tri)) {
+        if (entry_id ? reach.out_of_range(*entry_id, l, light, ray, tri)
+                     : out_of_range(light, ray, tri)) {
           d = Decided::out_of_range;
         } else if (casts && faces_away(light, ray.origin, tri)) {
           d = Decided::shadowed;

@@ -50,6 +50,14 @@ std::vector<std::size_t> pixels_to_check(std::size_t total, const ValidateOption
 
 }  // namespace
 
+Mistake judge(ShadowClass truth, float value) {
+  const ShadowClass got = class_of_value(value);
+  if (exact_value(value) && got == truth) return Mistake::none;
+  if (truth == ShadowClass::lit && got == ShadowClass::shadowed) return Mistake::false_shadowed;
+  if (truth == ShadowClass::shadowed && got == ShadowClass::lit) return Mistake::false_lit;
+  return Mistake::wrong_range;  // out of range on one side only, or a value that is no class
+}
+
 std::uint64_t ValidationReport::total_mismatches() const {
   std::uint64_t total = 0;
   for (const LightReport& l : lights) total += l.mismatches;
@@ -61,10 +69,10 @@ namespace {
 void check_fits(const std::string& where, int width, int height, std::size_t lights,
                 const ShadowChannels& image) {
   if (image.width != width || image.height != height) {
-    throw geometry::InputError(
-        where, "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                   " but the scene's camera renders " + std::to_string(width) + "x" +
-                   std::to_string(height));
+    throw geometry::InputError(where, "the image is " + std::to_string(image.width) + "x" +
+                                          std::to_string(image.height) +
+                                          " but the scene's camera renders " +
+                                          std::to_string(width) + "x" + std::to_string(height));
   }
   if (image.shadow.size() != lights) {
     throw geometry::InputError(where, "the image has " + std::to_string(image.shadow.size()) +
@@ -99,8 +107,7 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
   Progress progress(options.progress);
   progress.phase("validate", static_cast<std::uint64_t>(chunks));
   parallel_rows(chunks, options.threads, [&](int c) {
-    const std::size_t end =
-        std::min(truth.pixels.size(), static_cast<std::size_t>(c + 1) * kChunk);
+    const std::size_t end = std::min(truth.pixels.size(), static_cast<std::size_t>(c + 1) * kChunk);
     for (std::size_t k = static_cast<std::size_t>(c) * kChunk; k < end; ++k) {
       const std::size_t p = truth.pixels[k];
       const int i = static_cast<int>(p % static_cast<std::size_t>(truth.width));
@@ -145,18 +152,16 @@ ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& im
         mark = std::max<std::int8_t>(mark, 1);
         continue;
       }
-      const ShadowClass expected = truth.cls[k * truth.lights + l];
-      const float value = image.shadow[l][p];
-      const ShadowClass got = class_of_value(value);
-      if (exact_value(value) && got == expected) continue;
+      const Mistake m = judge(truth.cls[k * truth.lights + l], image.shadow[l][p]);
+      if (m == Mistake::none) continue;
       ++r.mismatches;
       mark = 2;
-      if (expected == ShadowClass::lit && got == ShadowClass::shadowed) {
+      if (m == Mistake::false_shadowed) {
         ++r.false_shadowed;
-      } else if (expected == ShadowClass::shadowed && got == ShadowClass::lit) {
+      } else if (m == Mistake::false_lit) {
         ++r.false_lit;
       } else {
-        ++r.wrong_range;  // out of range on one side only, or a value that is no class
+        ++r.wrong_range;
       }
     }
     report.mask[p] = mark;

@@ -39,6 +39,15 @@ struct ValidationReport {
   std::uint64_t total_mismatches() const;
 };
 
+/// How a render's shadow.<i> value compares with the oracle's class.
+enum class Mistake : std::uint8_t { none, false_lit, false_shadowed, wrong_range };
+
+/// The judgement score_render counts: none only for the exact AOV value of
+/// `truth`; false-lit / false-shadowed when the value's nearest class is lit
+/// where the truth is shadowed or the reverse; wrong range otherwise (range
+/// disagrees, or a value that is no class at all).
+Mistake judge(geometry::ShadowClass truth, float value);
+
 /// The oracle's answers at the checked pixels of a scene, computed once so
 /// that many renders of the same scene can be scored against them.
 struct OracleTruth {

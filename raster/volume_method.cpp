@@ -7,8 +7,8 @@
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
 #include <geometry/volume_crossings.h>
-#include <raster/light_reach.h>
 #include <raster/light_range.h>
+#include <raster/light_reach.h>
 #include <raster/parallel_rows.h>
 #include <raster/phase_clock.h>
 #include <raster/pixel_sample.h>
@@ -127,9 +127,8 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
             continue;
           }
           sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
-          const Reach r = reach.at(static_cast<std::uint32_t>(id), l);
           const bool beyond =
-              r == Reach::outside || (r == Reach::cut && out_of_range(scene.lights[l], ray, tri));
+              reach.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri);
           sample.classes[l] =
               beyond ? ShadowClass::out_of_range : class_of_count(sample.counts[l], pixel, l);
         }
