@@ -126,11 +126,16 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
             sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
             continue;
           }
+          if (reach.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
+            // count.<i> is 0 out of range, as in the exact fallback below.
+            // The scanline's count means nothing there: volumes are cut at
+            // the light's reach without caps, so it may even be negative.
+            sample.classes[l] = ShadowClass::out_of_range;
+            sample.counts[l] = 0;
+            continue;
+          }
           sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
-          const bool beyond =
-              reach.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri);
-          sample.classes[l] =
-              beyond ? ShadowClass::out_of_range : class_of_count(sample.counts[l], pixel, l);
+          sample.classes[l] = class_of_count(sample.counts[l], pixel, l);
         }
         store_sample(scene, ray, sample, pixel, frame);
         continue;

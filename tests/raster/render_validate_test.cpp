@@ -149,6 +149,37 @@ TEST(Render, WithoutShadowsEveryLightReachesEverySampleInRange) {
                std::invalid_argument);
 }
 
+/// count.<i> is the final depth count where light i's sample is in range,
+/// and 0 out of range and on the background (docs/rendering.md), whether the
+/// scanline or the exact fallback decided the pixel: a shadow that runs on
+/// beyond a light's reach must not leave its count behind there.
+TEST(Render, CountIsZeroOutOfRangeAndAgreesWithTheClassElsewhere) {
+  for (const char* name :
+       {"scenes/two_lights.json", "scenes/bergeron/fig15_sphere_of_influence.json",
+        "scenes/bergeron/fig04_limited_light.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / name);
+    const Frame frame = render(scene, {.method = Method::volume, .threads = 2});
+    int out_of_range = 0, shadowed = 0;
+    for (std::size_t l = 0; l < frame.lights(); ++l) {
+      for (std::size_t p = 0; p < frame.depth.size(); ++p) {
+        const float cls = frame.shadow[l][p], count = frame.count[l][p];
+        if (cls == kShadowOutOfRange || !std::isfinite(frame.depth[p])) {
+          EXPECT_EQ(count, 0.0f) << name << " light " << l << " pixel " << p;
+          out_of_range += cls == kShadowOutOfRange;
+        } else if (cls == kShadowShadowed) {
+          EXPECT_GE(count, 1.0f) << name << " light " << l << " pixel " << p;
+          ++shadowed;
+        } else {
+          EXPECT_EQ(count, 0.0f) << name << " light " << l << " pixel " << p;
+        }
+      }
+    }
+    EXPECT_GT(out_of_range, 100) << name;
+    EXPECT_GT(shadowed, 100) << name;
+  }
+}
+
 TEST(Render, SupersamplingKeepsThePixelCentresAOVsBitForBit) {
   geometry::Scene scene =
       geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/two_lights.json");
