@@ -130,12 +130,22 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
       t.edge = e;
       t.scan = active_rows(e.ya, e.yb, frame.height);
       // The strip examined round the edge must hold every pixel whose centre
-      // can pass the distance test below: 1e-6 px, the largest value of the
-      // rounding term 1e-12·m_scale·|d| in pixels, and the endpoints' own
-      // errors; plus one pixel of plain slack.
+      // can pass the distance test of flag_near_edges: 1e-6 px, the largest
+      // value of the rounding term 1e-12·m_scale·|d| in pixels, and the
+      // endpoints' own errors. The strip's bounds are computed in floating
+      // point too (row ± margin, the segment cut at those heights): a
+      // thousandth of a pixel, plus a term that grows with the coordinates
+      // for edges whose clipped endpoints lie far off screen, covers that
+      // rounding with a wide margin. The strip is kept this narrow on
+      // purpose: with many lights tens of thousands of shadow edges cross
+      // every row, and each pixel in a strip costs a distance test.
       const double hyp = std::hypot(e.m.x, e.m.y);
       const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
-      t.near_margin = 1.0 + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
+      const double coordinate_rounding = 1e-14 *
+                                         (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) *
+                                         (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1);
+      t.near_margin =
+          1e-3 + coordinate_rounding + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
       if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
       t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin,
                            std::max(e.ya, e.yb) + t.near_margin, frame.height);
@@ -544,7 +554,10 @@ class Band {
       const double y_lo = row_y - margin, y_hi = row_y + margin;
       if (std::max(e.ya, e.yb) < y_lo || std::min(e.ya, e.yb) > y_hi) continue;
       double x_lo, x_hi;
-      if (e.ya == e.yb) {
+      if (std::abs(e.yb - e.ya) < 1) {
+        // Less than a pixel tall: cutting the segment at the strip's heights
+        // would divide by a small height and magnify its rounding; every
+        // point of the segment lies in the strip's x range, so take it whole.
         x_lo = std::min(e.xa, e.xb);
         x_hi = std::max(e.xa, e.xb);
       } else {
