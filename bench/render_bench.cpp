@@ -3,15 +3,22 @@
 // by ':'); scripts/bench.sh fills it from CGAL's data tarball. Without it only
 // the smoke benchmark on data/meshes/torus.off runs, which CTest uses.
 //
+// With UMBRA_BENCH_DUMP=DIR every benchmark scene is also written there as
+// scene JSON, so that `umbra render` and `umbra validate` can be run on it.
+//
 // Counters per run: shadow polygons, exact fallbacks, samples/s (pixels x
 // lights per second). The ratio shadowed/plain is computed by
 // scripts/bench_table.py from the JSON output.
 #include <benchmark/benchmark.h>
+#include <fuzz/scene_export.h>
+#include <geometry/atomic_files.h>
 #include <raster/render.h>
 #include <raster/validate.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -75,6 +82,20 @@ void validate_scenes() {
   }
 }
 
+/// Every benchmark scene as scene JSON in UMBRA_BENCH_DUMP, if set.
+void dump_scenes() {
+  const char* dir = std::getenv("UMBRA_BENCH_DUMP");
+  if (dir == nullptr) return;
+  std::filesystem::create_directories(dir);
+  for (const auto& [name, scene] : scenes()) {
+    std::string stem = name;
+    std::replace(stem.begin(), stem.end(), '/', '-');
+    std::replace(stem.begin(), stem.end(), ':', '-');
+    geometry::write_all_or_nothing(
+        {{std::filesystem::path(dir) / (stem + ".json"), fuzz::scene_to_json(scene)}});
+  }
+}
+
 void register_benchmarks() {
   const std::string torus = std::string(UMBRA_DATA_DIR) + "/meshes/torus.off";
   for (const bool shadows : {true, false}) {
@@ -111,6 +132,7 @@ void register_benchmarks() {
 
 int main(int argc, char** argv) {
   umbra::bench::register_benchmarks();
+  umbra::bench::dump_scenes();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
