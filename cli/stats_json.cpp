@@ -20,8 +20,8 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
       {"raster", stats.seconds_raster}, {"maps", stats.seconds_maps},
       {"decide", stats.seconds_decide}, {"bvh", stats.seconds_bvh},
-      {"render", timings.render},
-      {"write", timings.write},         {"total", timings.total},
+      {"render", timings.render},       {"write", timings.write},
+      {"total", timings.total},
   };
   j["counts"] = {
       {"pixels", stats.pixels},
@@ -29,6 +29,7 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"shadow_polygons", stats.shadow_polygons},
       {"surface_polygons", stats.surface_polygons},
       {"spans", stats.spans},
+      {"shadow_bands_skipped", stats.shadow_bands_skipped},
       {"exact_fallback_pixels", stats.exact_fallback_pixels},
       {"twisted_polygons", stats.twisted_polygons},
       {"eye_degenerate_lights", stats.eye_degenerate_lights},

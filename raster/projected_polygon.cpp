@@ -77,7 +77,10 @@ double ProjectedPolygon::depth_error(const Vec3& d_cam, double t) const {
 }
 
 double ProjectedPolygon::depth_error_at(const Vec3& d_cam, double offset) const {
-  const double denominator = std::abs(dot(n, d_cam));
+  return depth_error_of(offset, std::abs(dot(n, d_cam)));
+}
+
+double ProjectedPolygon::depth_error_of(double offset, double denominator) const {
   if (!(denominator > 0) || !std::isfinite(offset)) return std::numeric_limits<double>::infinity();
   return 1e-12 * vertex_count * (mag + offset) * (n_length + size * offset) / denominator;
 }

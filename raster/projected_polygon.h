@@ -105,6 +105,10 @@ struct ProjectedPolygon {
   /// `offset`, so any offset at least that distance gives a bound at least
   /// depth_error's (infinite when offset is not finite).
   double depth_error_at(const Vec3& d_cam, double offset) const;
+  /// The same bound from `offset` and |n·d_cam| (`denominator`): it grows
+  /// with the first and falls with the second, so extreme values over a set
+  /// of rays bound it over the set.
+  double depth_error_of(double offset, double denominator) const;
 };
 
 /// Prepares polygons[index]. Throws std::invalid_argument on non-finite vertices.

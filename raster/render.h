@@ -71,6 +71,9 @@ struct RenderStats {
   std::uint64_t shadow_polygons = 0;
   std::uint64_t surface_polygons = 0;  ///< drawn by the scanline (non-planar: per fan triangle)
   std::uint64_t spans = 0;             ///< spans the scanline shaded
+  /// (shadow polygon, band of 8 rows) pairs the scanline skipped whole: the
+  /// polygon lies clearly behind every visible point round it there.
+  std::uint64_t shadow_bands_skipped = 0;
   std::uint64_t exact_fallback_pixels = 0;
   std::uint64_t twisted_polygons = 0;  ///< (light, polygon) pairs with an L-twist
   /// Lights for which no count at the eye is defined (the eye on one of

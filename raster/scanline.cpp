@@ -19,10 +19,13 @@
 //      it lies in front of the visible point.
 // Then, per scanline, every pixel that a floating-point decision could have
 // got wrong is flagged `uncertain`; the bounds are stated where they are used.
+#include <raster/parallel_rows.h>
 #include <raster/projected_polygon.h>
 #include <raster/scanline.h>
 
 #include <algorithm>
+#include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -63,7 +66,14 @@ struct TableEdge {
   RowRange scan;
   RowRange near;
   double near_margin =
-      0;  ///< half-width (pixels) of the strip round the edge examined for uncertainty
+      0;           ///< half-width (pixels) of the strip round the edge examined for uncertainty
+  double hyp = 0;  ///< |(m.x, m.y)|
+  double rounding = 0;  ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
+  bool shadow = false;  ///< the edge of a shadow polygon
+  /// The strip's pixels on a row with centre height y are those with centre
+  /// x in [strip_x0 + y·strip_slope ∓ strip_half_width] ∩ [strip_x_lo,
+  /// strip_x_hi]: a line and a box, so a row's range costs no division.
+  double strip_x0 = 0, strip_slope = 0, strip_half_width = 0, strip_x_lo = 0, strip_x_hi = 0;
 };
 
 /// Everything the bands share, read-only once built.
@@ -74,15 +84,28 @@ struct Scene {
   std::vector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
   std::vector<std::size_t>
       scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
+  /// scan.last of by_scan_row's edges, in its order: a worker starting a
+  /// chunk of rows reads these front to back to find the edges still active,
+  /// instead of reaching into the edge table once per edge started above.
+  std::vector<int> by_scan_row_last;
   std::vector<std::uint32_t> by_near_row;
   std::vector<std::size_t> near_bucket;
+  std::vector<int> by_near_row_last;  ///< near.last of by_near_row's edges
+  /// 1 where by_scan_row's / by_near_row's edge belongs to a shadow polygon:
+  /// the surface pass and the shadow pass take their own edges from the
+  /// same buckets.
+  std::vector<std::uint8_t> by_scan_row_shadow, by_near_row_shadow;
+  /// Per polygon: a shadow polygon whose depth may be bounded over a band
+  /// of rows (band_cull); others are always scanned.
+  std::vector<std::uint8_t> cullable;
   std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
   std::size_t lights = 0;
   std::vector<std::uint8_t> group_start;  ///< every twisted group's flag at the eye
 };
 
 void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range, int height,
-                 std::vector<std::uint32_t>& order, std::vector<std::size_t>& bucket) {
+                 std::vector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
+                 std::vector<int>& last, std::vector<std::uint8_t>& shadow) {
   bucket.assign(static_cast<std::size_t>(height) + 2, 0);
   for (const TableEdge& e : edges)
     if ((e.*range).first <= (e.*range).last) ++bucket[(e.*range).first + 1];
@@ -92,16 +115,87 @@ void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range
   for (std::uint32_t k = 0; k < edges.size(); ++k)
     if ((edges[k].*range).first <= (edges[k].*range).last)
       order[fill[(edges[k].*range).first]++] = k;
+  last.resize(order.size());
+  shadow.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    last[k] = (edges[order[k]].*range).last;
+    shadow[k] = edges[order[k]].shadow;
+  }
 }
 
-Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
-              std::size_t lights, std::span<const std::uint8_t> group_start) {
-  Scene scene;
-  scene.lights = lights;
-  scene.group_start.assign(group_start.begin(), group_start.end());
-  scene.camera = make_camera_space(frame, input);
-  const CameraSpace& camera = scene.camera;
-  scene.polygons.reserve(input.size());
+/// Edge e of a projected polygon as the y bucket sort holds it.
+TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double ray_slant) {
+  const geometry::CameraFrame& frame = camera.frame;
+  TableEdge t;
+  t.edge = e;
+  t.scan = active_rows(e.ya, e.yb, frame.height);
+  // The strip examined round the edge must hold every pixel whose centre
+  // can pass the distance test of flag_near_edges: 1e-6 px, the largest
+  // value of the rounding term 1e-12·m_scale·|d| in pixels, and the
+  // endpoints' own errors. The strip's bounds are computed in floating
+  // point too (row ± margin, the segment cut at those heights): a
+  // thousandth of a pixel, plus a term that grows with the coordinates
+  // for edges whose clipped endpoints lie far off screen, covers that
+  // rounding with a wide margin. The strip is kept this narrow on
+  // purpose: with many lights tens of thousands of shadow edges cross
+  // every row, and each pixel in a strip costs a distance test.
+  const double hyp = std::hypot(e.m.x, e.m.y);
+  const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
+  const double coordinate_rounding = 1e-14 * (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) *
+                                     (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1);
+  t.near_margin = 1e-3 + coordinate_rounding + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
+  if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
+  t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin, std::max(e.ya, e.yb) + t.near_margin,
+                       frame.height);
+  // active_rows is half-open at the bottom; the strip is closed.
+  if (t.near.last < frame.height - 1 &&
+      t.near.last + 1 + 0.5 <= std::max(e.ya, e.yb) + t.near_margin)
+    ++t.near.last;
+  t.hyp = hyp;
+  t.rounding = 1e-12 * e.m_scale;
+  // The strip on a row: the pixel centres within `margin` of the segment's
+  // part at heights within `margin` of the row, where margin also holds the
+  // widening flag_near_edges applies on rows through an endpoint. Such a
+  // centre lies within margin·(1 + |dx/dy|) of the segment's line along the
+  // row, and within margin of the segment's x extent. The line is evaluated
+  // as x0 + y·slope; its rounding, at most a few ulps of |ya|·|slope| ≤
+  // |ya|·(|xa| + |xb|) for a segment at least a pixel tall, is in
+  // coordinate_rounding. A segment less than a pixel tall is taken whole
+  // along its x extent: dividing by its height would magnify rounding.
+  const double margin = t.near_margin + std::max(e.err_a, e.err_b);
+  t.strip_x_lo = std::min(e.xa, e.xb) - margin;
+  t.strip_x_hi = std::max(e.xa, e.xb) + margin;
+  if (std::abs(e.yb - e.ya) >= 1) {
+    t.strip_slope = (e.xb - e.xa) / (e.yb - e.ya);
+    t.strip_x0 = e.xa - e.ya * t.strip_slope;
+    t.strip_half_width = margin * (1 + std::abs(t.strip_slope));
+  } else {
+    t.strip_half_width = std::numeric_limits<double>::infinity();
+  }
+  if (!std::isfinite(t.strip_x0) || !std::isfinite(t.strip_slope)) {
+    // Off-screen coordinates so large that the line overflows: whole extent.
+    t.strip_x0 = t.strip_slope = 0;
+    t.strip_half_width = std::numeric_limits<double>::infinity();
+  }
+  return t;
+}
+
+/// Calls work(begin, end) over [0, count) in blocks, on up to `threads`
+/// threads; each index is handled alone, so the split changes nothing.
+template <class Work>
+void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
+  constexpr std::size_t kBlock = 2048;
+  const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
+  parallel_rows(blocks, threads, [&](int b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kBlock;
+    work(begin, std::min(count, begin + kBlock));
+  });
+}
+
+/// Input errors are found here, in polygon order, before any work is shared
+/// out: the first bad polygon is the one reported, whatever the threads.
+void check_input(std::span<const RasterPolygon> input, std::size_t lights,
+                 std::span<const std::uint8_t> group_start) {
   for (std::size_t k = 0; k < input.size(); ++k) {
     if (input[k].kind == RasterPolygon::Kind::shadow && input[k].light >= lights)
       throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
@@ -112,52 +206,62 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
       throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
                                   " names group " + std::to_string(input[k].group) + " of " +
                                   std::to_string(group_start.size()));
-    scene.polygons.push_back(project_polygon(input[k], static_cast<std::uint32_t>(k), camera));
+    for (const Vec3& v : input[k].vertices)
+      if (!geometry::is_finite(v))
+        throw std::invalid_argument("scanline_render: polygon " + std::to_string(k) +
+                                    " has a non-finite vertex");
   }
+}
+
+Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+              std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads) {
+  check_input(input, lights, group_start);
+  Scene scene;
+  scene.lights = lights;
+  scene.group_start.assign(group_start.begin(), group_start.end());
+  scene.camera = make_camera_space(frame, input);
+  const CameraSpace& camera = scene.camera;
+  // With many lights there are 100k+ polygons to project and edges to
+  // table: shared out, each written to its own slot.
+  scene.polygons.resize(input.size());
+  parallel_blocks(input.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      scene.polygons[k] = project_polygon(input[k], static_cast<std::uint32_t>(k), camera);
+  });
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
   const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
-  // Reserved: with many lights the table holds 100k+ edges, and growing it
-  // step by step copies them over and over on the one thread that prepares.
-  std::size_t edge_count = 0;
-  for (const ProjectedPolygon& polygon : scene.polygons) edge_count += polygon.edges.size();
-  scene.edges.reserve(edge_count);
+  std::vector<std::size_t> first_edge(scene.polygons.size() + 1, 0);
   for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
     const ProjectedPolygon& polygon = scene.polygons[k];
     if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
-    for (const ProjectedEdge& e : polygon.edges) {
-      TableEdge t;
-      t.edge = e;
-      t.scan = active_rows(e.ya, e.yb, frame.height);
-      // The strip examined round the edge must hold every pixel whose centre
-      // can pass the distance test of flag_near_edges: 1e-6 px, the largest
-      // value of the rounding term 1e-12·m_scale·|d| in pixels, and the
-      // endpoints' own errors. The strip's bounds are computed in floating
-      // point too (row ± margin, the segment cut at those heights): a
-      // thousandth of a pixel, plus a term that grows with the coordinates
-      // for edges whose clipped endpoints lie far off screen, covers that
-      // rounding with a wide margin. The strip is kept this narrow on
-      // purpose: with many lights tens of thousands of shadow edges cross
-      // every row, and each pixel in a strip costs a distance test.
-      const double hyp = std::hypot(e.m.x, e.m.y);
-      const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
-      const double coordinate_rounding = 1e-14 *
-                                         (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) *
-                                         (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1);
-      t.near_margin =
-          1e-3 + coordinate_rounding + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
-      if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
-      t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin,
-                           std::max(e.ya, e.yb) + t.near_margin, frame.height);
-      // active_rows is half-open at the bottom; the strip is closed.
-      if (t.near.last < frame.height - 1 &&
-          t.near.last + 1 + 0.5 <= std::max(e.ya, e.yb) + t.near_margin)
-        ++t.near.last;
-      scene.edges.push_back(t);
-    }
+    first_edge[k + 1] = first_edge[k] + polygon.edges.size();
   }
-  bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket);
-  bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket);
+  scene.edges.resize(first_edge.back());
+  scene.cullable.assign(scene.polygons.size(), 0);
+  parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const ProjectedPolygon& polygon = scene.polygons[k];
+      const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
+      // Band::behind_band widens a polygon's box by a pixel, which must hold
+      // its edges' strips and the rounding of its clipped coordinates:
+      // polygons with wider strips or far-off coordinates are always scanned.
+      bool cullable = shadow && polygon.status == ProjectedPolygon::Status::active;
+      for (std::size_t n = 0; n < polygon.edges.size(); ++n) {
+        const ProjectedEdge& e = polygon.edges[n];
+        TableEdge& t = scene.edges[first_edge[k] + n];
+        t = table_edge(e, camera, ray_slant);
+        t.shadow = shadow;
+        cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e9 &&
+                   std::abs(e.ya) < 1e9 && std::abs(e.xb) < 1e9 && std::abs(e.yb) < 1e9;
+      }
+      scene.cullable[k] = cullable;
+    }
+  });
+  bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,
+              scene.by_scan_row_last, scene.by_scan_row_shadow);
+  bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket,
+              scene.by_near_row_last, scene.by_near_row_shadow);
   return scene;
 }
 
@@ -182,7 +286,7 @@ bool before(const DepthEntry& a, const DepthEntry& b) {
   return a.t < b.t || (a.t == b.t && a.polygon < b.polygon);
 }
 
-/// One band of scanlines [row0, row1), with its own active edge list.
+/// One worker's scanlines, with its own active edge lists.
 class Band {
  public:
   Band(const Scene& scene, ScanlineResult& result, Progress* progress)
@@ -191,53 +295,66 @@ class Band {
         progress_(progress),
         inside_(scene.polygons.size(), 0),
         slot_(scene.polygons.size(), 0),
-        flags_(scene.group_start) {}
+        flags_(scene.group_start),
+        cull_band_(scene.polygons.size(), -1),
+        culled_(scene.polygons.size(), 0) {}
+
+  /// Rows go through the surface pass and the shadow pass a band of this
+  /// many rows at a time, so that a shadow polygon can be dismissed for a
+  /// whole band at once (behind_band). Chunks start on band boundaries.
+  static constexpr int kBandRows = 8;
 
   std::uint64_t spans() const { return spans_; }
+  std::uint64_t shadow_bands_skipped() const { return skipped_; }
 
+  /// Rows [row0, row1). A worker may run several such chunks one after the
+  /// other; each starts its active lists afresh.
   void run(int row0, int row1) {
     const int width = scene_.camera.frame.width;
-    ray_.resize(width);
-    ray_length_.resize(width);
-    visible_error_.resize(width);
+    const std::size_t band_pixels = static_cast<std::size_t>(kBandRows) * width;
+    ray_.resize(band_pixels);
+    ray_length_.resize(band_pixels);
+    visible_error_.resize(band_pixels);
+    crossings_.clear();
+    shadow_crossings_.clear();
+    near_edges_.clear();
     // Start the active edge lists at row0: every edge active there.
-    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
-      const std::uint32_t e = scene_.by_scan_row[k];
-      if (scene_.edges[e].scan.last >= row0) activate(e);
-    }
-    for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k) {
-      const std::uint32_t e = scene_.by_near_row[k];
-      if (scene_.edges[e].near.last >= row0) near_edges_.push_back(make_near_edge(e));
-    }
-    for (int j = row0; j < row1; ++j) {
-      const auto ended = [&](const Crossing& c) { return c.last < j; };
-      std::erase_if(crossings_, ended);
-      std::erase_if(shadow_crossings_, ended);
-      // Edges carried over from the previous row stay nearly sorted; the
-      // row's new edges are sorted apart and merged in (appending them to an
-      // insertion sort would move each across the whole list).
-      const std::size_t carried = j > row0 ? crossings_.size() : 0;
-      const std::size_t shadows_carried = j > row0 ? shadow_crossings_.size() : 0;
-      if (j > row0) {
-        for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
-          activate(scene_.by_scan_row[k]);
-        for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
-          near_edges_.push_back(make_near_edge(scene_.by_near_row[k]));
+    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k)
+      if (scene_.by_scan_row_last[k] >= row0) activate(k);
+    for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k)
+      if (scene_.by_near_row_last[k] >= row0)
+        near_edges_.push_back(make_strip(scene_.by_near_row[k]));
+    for (int b0 = row0; b0 < row1; b0 += kBandRows) {
+      band0_ = b0;
+      band1_ = std::min(row1, b0 + kBandRows);
+      // The band's surfaces: visible points, depths and their errors.
+      for (int j = b0; j < band1_; ++j) {
+        row_base_ = static_cast<std::size_t>(j - b0) * width;
+        std::erase_if(crossings_, [&](const Crossing& c) { return c.last < j; });
+        // Edges carried over from the previous row stay nearly sorted; the
+        // row's new edges are sorted apart and merged in (appending them to
+        // an insertion sort would move each across the whole list).
+        const std::size_t carried = j > row0 ? crossings_.size() : 0;
+        if (j > row0)
+          for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
+            if (!scene_.by_scan_row_shadow[k]) activate(k);
+        scan_row(j, carried);
       }
-      // Strips flag pixels independently of each other, so their order is
-      // free: an ended strip takes the last one's place instead of every
-      // later strip moving down one.
-      for (std::size_t k = 0; k < near_edges_.size();) {
-        if (near_edges_[k].last >= j) {
-          ++k;
-          continue;
+      bound_band_depth();
+      // The band's shadow polygons and the strips round every edge.
+      for (int j = b0; j < band1_; ++j) {
+        row_base_ = static_cast<std::size_t>(j - b0) * width;
+        std::erase_if(shadow_crossings_, [&](const Crossing& c) { return c.last < j; });
+        const std::size_t carried = j > row0 ? shadow_crossings_.size() : 0;
+        if (j > row0) {
+          for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
+            if (scene_.by_scan_row_shadow[k]) activate(k);
+          for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
+            near_edges_.push_back(make_strip(scene_.by_near_row[k]));
         }
-        near_edges_[k] = near_edges_.back();
-        near_edges_.pop_back();
+        scan_shadows(j, carried);
+        if (progress_) progress_->advance();
       }
-      scan_row(j, carried);
-      scan_shadows(j, shadows_carried);
-      if (progress_) progress_->advance();
     }
   }
 
@@ -253,43 +370,28 @@ class Band {
     std::uint32_t polygon;
     int last;  ///< last active row
   };
-  /// An edge whose uncertainty strip meets the row, with everything
-  /// flag_near_edges reads (copied for the same reason as Crossing).
-  struct NearEdge {
-    Vec3 m;
-    double hyp;       ///< |(m.x, m.y)|
-    double rounding;  ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
-    double xa, ya, xb, yb, err_a, err_b;
-    double margin;  ///< TableEdge::near_margin
-    std::uint32_t polygon;
+  /// An edge whose uncertainty strip meets the row: what every row reads to
+  /// find the strip's pixels on it (tens of thousands of strips per row with
+  /// many lights, nearly all empty), copied from the edge table. The rest
+  /// is read from the table for the few pixels inside.
+  struct NearStrip {
+    double x0, slope, half_width, x_lo, x_hi;  ///< TableEdge::strip_*
+    std::uint32_t edge;
     int last;  ///< last row of the strip
-    bool shadow;
   };
 
-  /// Edge k enters the surfaces' or the shadow polygons' active list.
-  void activate(std::uint32_t k) {
-    const TableEdge& t = scene_.edges[k];
-    const bool shadow = scene_.polygons[t.edge.polygon].kind == RasterPolygon::Kind::shadow;
-    (shadow ? shadow_crossings_ : crossings_)
-        .push_back({0, t.edge.m, k, t.edge.polygon, t.scan.last});
+  /// The edge at place k of the y bucket sort enters the surfaces' or the
+  /// shadow polygons' active list.
+  void activate(std::size_t k) {
+    const std::uint32_t e = scene_.by_scan_row[k];
+    const TableEdge& t = scene_.edges[e];
+    (scene_.by_scan_row_shadow[k] ? shadow_crossings_ : crossings_)
+        .push_back({0, t.edge.m, e, t.edge.polygon, t.scan.last});
   }
-  NearEdge make_near_edge(std::uint32_t k) const {
+  NearStrip make_strip(std::uint32_t k) const {
     const TableEdge& t = scene_.edges[k];
-    const ProjectedEdge& e = t.edge;
-    const bool shadow = scene_.polygons[e.polygon].kind == RasterPolygon::Kind::shadow;
-    return {e.m,
-            std::hypot(e.m.x, e.m.y),
-            1e-12 * e.m_scale,
-            e.xa,
-            e.ya,
-            e.xb,
-            e.yb,
-            e.err_a,
-            e.err_b,
-            t.near_margin,
-            e.polygon,
-            t.near.last,
-            shadow};
+    return {t.strip_x0, t.strip_slope, t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
+            k,          t.near.last};
   }
 
   std::size_t pixel(int i, int j) const {
@@ -318,13 +420,14 @@ class Band {
     const CameraSpace& camera = scene_.camera;
     const int width = camera.frame.width;
     for (int i = 0; i < width; ++i) {
-      ray_[i] = camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
-      ray_length_[i] = length(ray_[i]);
+      ray_[row_base_ + i] =
+          camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
+      ray_length_[row_base_ + i] = length(ray_[row_base_ + i]);
       const std::size_t p = pixel(i, j);
       result_.visible[p] = -1;
       result_.depth[p] = kInfinity;
       result_.uncertain[p] = 0;
-      visible_error_[i] = 0;
+      visible_error_[row_base_ + i] = 0;
       for (std::size_t l = 0; l < scene_.lights; ++l) result_.count[p * scene_.lights + l] = 0;
     }
     // x sort: insertion sort of the carried crossings (nearly sorted since
@@ -379,6 +482,10 @@ class Band {
     std::inplace_merge(shadow_crossings_.begin(), middle, shadow_crossings_.end(), by_edge);
     for (std::size_t k = 0; k < shadow_crossings_.size();) {
       const std::uint32_t polygon = shadow_crossings_[k].polygon;
+      if (behind_in_band(polygon)) {
+        while (k < shadow_crossings_.size() && shadow_crossings_[k].polygon == polygon) ++k;
+        continue;
+      }
       columns_.clear();
       for (; k < shadow_crossings_.size() && shadow_crossings_[k].polygon == polygon; ++k) {
         const double x = crossing_x(shadow_crossings_[k], j);
@@ -426,7 +533,7 @@ class Band {
     order_.clear();
     for (std::uint32_t polygon : surfaces_) order_.push_back({0, 0, polygon});
     for (int i = i0; i < i1; ++i) {
-      const Vec3& d = ray_[i];
+      const Vec3& d = ray_[row_base_ + i];
       for (DepthEntry& entry : order_) measure(entry, d);
       for (std::size_t k = 1; k < order_.size(); ++k) {
         const DepthEntry e = order_[k];
@@ -456,7 +563,7 @@ class Band {
       if (visible) {
         result_.visible[p] = scene_.polygons[visible->polygon].id;
         result_.depth[p] = visible->t;
-        visible_error_[i] = visible->err;
+        visible_error_[row_base_ + i] = visible->err;
       }
       if (uncertain) result_.uncertain[p] = 1;
     }
@@ -474,20 +581,21 @@ class Band {
     for (int i = i0; i < i1; ++i) {
       const std::size_t p = pixel(i, j);
       if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
-      const Vec3& d = ray_[i];
+      const Vec3& d = ray_[row_base_ + i];
       double t = shadow.depth(d);
       if (std::isnan(t)) t = kInfinity;  // ray in the plane; flagged by its error
       const double t_visible = result_.depth[p];
       const auto unclear = [&](double err) {
         return !std::isfinite(err) || too_close(t, err, 0.0, 0.0, z_near) ||
-               too_close(t, err, t_visible, visible_error_[i], z_near);
+               too_close(t, err, t_visible, visible_error_[row_base_ + i], z_near);
       };
       // depth_error measures |t·d − p0| (a square root); first try the bound
       // with |t|·|d| + |p0| in its place, which is at least as large (the
       // factor covers both lengths' rounding). The error bound grows with that
       // distance and too_close with the error, so a depth clear of this
       // larger bound is clear of depth_error's: the decision is the same.
-      const double offset_bound = (std::abs(t) * ray_length_[i] + shadow.p0_length) * (1 + 1e-9);
+      const double offset_bound =
+          (std::abs(t) * ray_length_[row_base_ + i] + shadow.p0_length) * (1 + 1e-9);
       if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
         result_.uncertain[p] = 1;
       if (!(t > 0 && t < t_visible)) continue;
@@ -541,46 +649,49 @@ class Band {
   /// arithmetic; the pixels whose answer that can change lie within that
   /// error of the edge's line, so the threshold grows by it on that row only.
   void flag_near_edges(int j) {
-    const CameraSpace& camera = scene_.camera;
-    const int width = camera.frame.width;
+    const int width = scene_.camera.frame.width;
     const double row_y = j + 0.5;
-    for (const NearEdge& e : near_edges_) {
-      double extra = 0;
-      if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
-      if (std::abs(row_y - e.yb) <= e.err_b) extra = std::max(extra, e.err_b);
-      const double margin = e.margin + extra;
-      // Pixels of this row within `margin` of the segment: the segment's part
-      // in the strip |y − row_y| ≤ margin, widened by margin.
-      const double y_lo = row_y - margin, y_hi = row_y + margin;
-      if (std::max(e.ya, e.yb) < y_lo || std::min(e.ya, e.yb) > y_hi) continue;
-      double x_lo, x_hi;
-      if (std::abs(e.yb - e.ya) < 1) {
-        // Less than a pixel tall: cutting the segment at the strip's heights
-        // would divide by a small height and magnify its rounding; every
-        // point of the segment lies in the strip's x range, so take it whole.
-        x_lo = std::min(e.xa, e.xb);
-        x_hi = std::max(e.xa, e.xb);
-      } else {
-        const double l0 = std::clamp((y_lo - e.ya) / (e.yb - e.ya), 0.0, 1.0);
-        const double l1 = std::clamp((y_hi - e.ya) / (e.yb - e.ya), 0.0, 1.0);
-        const double xa = e.xa + l0 * (e.xb - e.xa), xb = e.xa + l1 * (e.xb - e.xa);
-        x_lo = std::min(xa, xb);
-        x_hi = std::max(xa, xb);
+    // Strips flag pixels independently of each other, so their order is
+    // free: an ended strip takes the last one's place instead of every later
+    // strip moving down one.
+    for (std::size_t k = 0; k < near_edges_.size();) {
+      const NearStrip& strip = near_edges_[k];
+      if (strip.last < j) {
+        near_edges_[k] = near_edges_.back();
+        near_edges_.pop_back();
+        continue;
       }
-      const int i0 = clamp_column(std::ceil(x_lo - margin - 0.5), width);
-      const int i1 = clamp_column(std::floor(x_hi + margin - 0.5) + 1, width);
-      for (int i = i0; i < i1; ++i) {
-        const std::size_t p = pixel(i, j);
-        if (result_.uncertain[p]) continue;
-        // Where nothing is seen a shadow polygon changes nothing (matters()),
-        // decided here before the distance test.
-        if (e.shadow && result_.visible[p] < 0) continue;
-        const Vec3& d = ray_[i];
-        const double threshold = (1e-6 + extra) * camera.pixel_size * std::abs(d.z) * e.hyp +
-                                 e.rounding * ray_length_[i];
-        if (std::abs(dot(e.m, d)) > threshold) continue;
-        if (matters(scene_.polygons[e.polygon], i, p)) result_.uncertain[p] = 1;
-      }
+      ++k;
+      const double x = strip.x0 + row_y * strip.slope;
+      const double x_lo = std::max(x - strip.half_width, strip.x_lo);
+      const double x_hi = std::min(x + strip.half_width, strip.x_hi);
+      int i0 = clamp_column(std::ceil(x_lo - 0.5), width);
+      int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
+      if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
+      if (i0 < i1) flag_near_edge(scene_.edges[strip.edge], i0, i1, j);
+    }
+  }
+
+  /// The pixels [i0, i1) of row j in the strip of edge e: the distance test.
+  void flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
+    const ProjectedEdge& e = t.edge;
+    // A shadow polygon behind every visible point round it matters nowhere.
+    if (t.shadow && behind_in_band(e.polygon)) return;
+    const double row_y = j + 0.5;
+    double extra = 0;
+    if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
+    if (std::abs(row_y - e.yb) <= e.err_b) extra = std::max(extra, e.err_b);
+    const double scale = (1e-6 + extra) * scene_.camera.pixel_size * t.hyp;
+    for (int i = i0; i < i1; ++i) {
+      const std::size_t p = pixel(i, j);
+      if (result_.uncertain[p]) continue;
+      // Where nothing is seen a shadow polygon changes nothing (matters()),
+      // decided here before the distance test.
+      if (t.shadow && result_.visible[p] < 0) continue;
+      const Vec3& d = ray_[row_base_ + i];
+      const double threshold = scale * std::abs(d.z) + t.rounding * ray_length_[row_base_ + i];
+      if (std::abs(dot(e.m, d)) > threshold) continue;
+      if (matters(scene_.polygons[e.polygon], i, p)) result_.uncertain[p] = 1;
     }
   }
 
@@ -590,13 +701,126 @@ class Band {
     // Where nothing is seen a shadow polygon changes nothing (a surface
     // whose edge passes close flags the pixel through its own edge strip).
     if (result_.visible[p] < 0) return polygon.kind == RasterPolygon::Kind::surface;
-    const Vec3& d = ray_[i];
+    const Vec3& d = ray_[row_base_ + i];
     double t = polygon.depth(d);
     if (std::isnan(t)) return true;
     const double err = polygon.depth_error(d, t);
     const double t_visible = result_.depth[p];
     return !(t > t_visible &&
-             !too_close(t, err, t_visible, visible_error_[i], scene_.camera.z_near));
+             !too_close(t, err, t_visible, visible_error_[row_base_ + i], scene_.camera.z_near));
+  }
+
+  /// After the band's surface pass: per column, the largest upper bound
+  /// t·(1 + 1e-9) + error on an exact visible depth over the band's rows
+  /// (-infinity where nothing is seen), and the sparse table of its maxima
+  /// over runs of 2^k columns, so any run's maximum costs two lookups.
+  void bound_band_depth() {
+    const int width = scene_.camera.frame.width;
+    const auto w = static_cast<std::size_t>(width);
+    int levels = 1;
+    while ((std::size_t{1} << levels) <= w) ++levels;
+    depth_bound_.resize(static_cast<std::size_t>(levels));
+    std::vector<double>& base = depth_bound_[0];
+    base.assign(w, -kInfinity);
+    for (int j = band0_; j < band1_; ++j)
+      for (int i = 0; i < width; ++i) {
+        const std::size_t p = pixel(i, j);
+        if (result_.visible[p] < 0) continue;
+        const double bound =
+            result_.depth[p] * (1 + 1e-9) +
+            visible_error_[static_cast<std::size_t>(j - band0_) * w + static_cast<std::size_t>(i)];
+        base[static_cast<std::size_t>(i)] = std::max(base[static_cast<std::size_t>(i)], bound);
+      }
+    for (int k = 1; k < levels; ++k) {
+      const std::vector<double>& below = depth_bound_[k - 1];
+      std::vector<double>& level = depth_bound_[k];
+      const std::size_t half = std::size_t{1} << (k - 1);
+      level.resize(w - 2 * half + 1);
+      for (std::size_t i = 0; i < level.size(); ++i) level[i] = std::max(below[i], below[i + half]);
+    }
+  }
+
+  /// The largest visible-depth bound over columns [i0, i1], i0 <= i1.
+  double band_depth_bound(int i0, int i1) const {
+    const auto length = static_cast<unsigned>(i1 - i0 + 1);
+    const int k = std::bit_width(length) - 1;
+    const std::vector<double>& level = depth_bound_[static_cast<std::size_t>(k)];
+    return std::max(level[static_cast<std::size_t>(i0)],
+                    level[static_cast<std::size_t>(i1 - (1 << k) + 1)]);
+  }
+
+  /// Is shadow polygon `polygon` clearly behind the visible point at every
+  /// pixel of the current band where it could count or flag? Judged once
+  /// per polygon and band.
+  bool behind_in_band(std::uint32_t polygon) {
+    if (!scene_.cullable[polygon]) return false;
+    if (cull_band_[polygon] != band0_) {
+      cull_band_[polygon] = band0_;
+      culled_[polygon] = behind_band(scene_.polygons[polygon]);
+      skipped_ += culled_[polygon];
+    }
+    return culled_[polygon] != 0;
+  }
+
+  /// Bergeron's saving, a band of rows at a time: a shadow polygon behind the
+  /// visible point changes nothing. The polygon's part in the band's rows,
+  /// widened by a pixel (which holds its edges' strips, cullable's margin
+  /// < 0.25, and the rounding of the clip), lies in a screen box; over the
+  /// box its plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is smallest at
+  /// a corner when n·d keeps one sign, and its error bound
+  /// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest and
+  /// |t·d − p0| largest, at corners too. If the smallest depth, less a
+  /// millionth (far above the rounding of these few operations and of the
+  /// sample rays, given |n·d| ≥ 1e-6·|n||d|) and less that error, exceeds the
+  /// box's largest visible-depth bound (plus too_close's 1e-9·z_near), then
+  /// at every pixel of the band shade_shadow would find the polygon behind
+  /// and clear of both error bounds, and matters() would say no: skipping it
+  /// changes no count and no flag.
+  bool behind_band(const ProjectedPolygon& polygon) const {
+    const CameraSpace& camera = scene_.camera;
+    const geometry::CameraFrame& frame = camera.frame;
+    const double y0 = band0_ - 0.5, y1 = band1_ + 0.5;
+    double x_lo = kInfinity, x_hi = -kInfinity;
+    for (const ProjectedEdge& e : polygon.edges) {
+      if (std::max(e.ya, e.yb) < y0 || std::min(e.ya, e.yb) > y1) continue;
+      double xa = e.xa, xb = e.xb;
+      if (e.ya != e.yb) {
+        const double l0 = std::clamp((y0 - e.ya) / (e.yb - e.ya), 0.0, 1.0);
+        const double l1 = std::clamp((y1 - e.ya) / (e.yb - e.ya), 0.0, 1.0);
+        xa = e.xa + l0 * (e.xb - e.xa);
+        xb = e.xa + l1 * (e.xb - e.xa);
+      }
+      x_lo = std::min({x_lo, xa, xb});
+      x_hi = std::max({x_hi, xa, xb});
+    }
+    if (!(x_lo <= x_hi)) return true;  // no part in the band's rows
+    x_lo -= 1;
+    x_hi += 1;
+    const int i0 = std::max(0, static_cast<int>(std::ceil(x_lo - 0.5)));
+    const int i1 = std::min(frame.width - 1, static_cast<int>(std::floor(x_hi - 0.5)));
+    if (i0 > i1) return true;  // no pixel centre in the box
+    const double visible = band_depth_bound(i0, i1);
+    if (visible == -kInfinity) return true;  // nothing seen: no count to change
+    const double ah = frame.a * frame.h;
+    double t_min = kInfinity, offset = 0, denominator = kInfinity;
+    int sign = 0;
+    for (const double x : {x_lo, x_hi})
+      for (const double y : {y0, y1}) {
+        const Vec3 d{(2.0 * x / frame.width - 1.0) * ah, (1.0 - 2.0 * y / frame.height) * frame.h,
+                     1.0};
+        const double n_d = dot(polygon.n, d);
+        if (!(std::abs(n_d) >= 1e-6 * polygon.n_length * length(d))) return false;
+        const int s = n_d > 0 ? 1 : -1;
+        if (sign != 0 && s != sign) return false;
+        sign = s;
+        const double t = polygon.n_dot_p0 / n_d;
+        if (!(t > 0)) return false;
+        t_min = std::min(t_min, t);
+        offset = std::max(offset, length(t * d - polygon.p0));
+        denominator = std::min(denominator, std::abs(n_d));
+      }
+    const double error = polygon.depth_error_of(offset, denominator);
+    return t_min * (1 - 1e-6) - error > visible + 1e-9 * camera.z_near;
   }
 
   /// A polygon with no projected area is not drawn; every pixel of its
@@ -616,19 +840,27 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
-  std::uint64_t spans_ = 0;                 // spans shaded by this band
+  std::uint64_t spans_ = 0;                 // spans shaded by this worker
+  std::uint64_t skipped_ = 0;               // (polygon, band) pairs it found behind
   std::vector<Crossing> crossings_;         // the surfaces' active edge list, x-sorted
   std::vector<Crossing> shadow_crossings_;  // the shadow polygons' active edges, in edge order
   std::vector<int> columns_;                // one shadow polygon's crossing columns on the row
-  std::vector<NearEdge> near_edges_;        // edges whose strip meets the row
+  std::vector<NearStrip> near_edges_;       // edges whose strip meets the row
   std::vector<std::uint8_t> inside_;        // per polygon: even-odd state along the row
   std::vector<std::uint32_t> slot_;         // per polygon: its place in surfaces_
   std::vector<std::uint32_t> surfaces_;     // surfaces inside at the current span
   std::vector<DepthEntry> order_;           // the span's depth-ordered list
-  std::vector<Vec3> ray_;                   // the row's sample directions in camera space
-  std::vector<double> ray_length_;          // their lengths
-  std::vector<double> visible_error_;       // depth error bound of each pixel's visible hit
-  std::vector<std::uint8_t> flags_;         // per twisted group: its flag along the current ray
+  std::vector<Vec3> ray_;              // the band's sample directions in camera space, row by row
+  std::vector<double> ray_length_;     // their lengths
+  std::vector<double> visible_error_;  // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;    // per twisted group: its flag along the current ray
+  int band0_ = 0, band1_ = 0;          // the current band's rows [band0_, band1_)
+  std::size_t row_base_ = 0;           // the current row's place in ray_ and the like
+  // depth_bound_[k][i]: the largest bound on an exact visible depth in the
+  // band's columns [i, i + 2^k) (-infinity where nothing is seen).
+  std::vector<std::vector<double>> depth_bound_;
+  std::vector<int> cull_band_;        // per polygon: first row of the band last judged, or -1
+  std::vector<std::uint8_t> culled_;  // per polygon: behind in that band
   // (column, polygon): twisted shadow polygons crossed in front of the visible point on the row
   std::vector<std::pair<std::uint32_t, std::uint32_t>> group_hits_;
 };
@@ -639,42 +871,59 @@ class Band {
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start,
-                               Progress* progress) {
+                               Progress* progress, bool skip_hidden_shadows) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
-  const detail::Scene scene = detail::prepare(frame, polygons, lights, group_start);
+  threads = resolve_threads(threads);
+  detail::Scene scene = detail::prepare(frame, polygons, lights, group_start, threads);
+  if (!skip_hidden_shadows) std::fill(scene.cullable.begin(), scene.cullable.end(), 0);
 
   ScanlineResult result;
   result.width = frame.width;
   result.height = frame.height;
   result.lights = lights;
   const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
-  result.visible.assign(pixels, -1);
-  result.depth.assign(pixels, std::numeric_limits<double>::infinity());
-  result.count.assign(pixels * lights, 0);
-  result.uncertain.assign(pixels, 0);
+  // Not initialized here: every row's pixels are set by the worker that
+  // renders the row (Band::scan_row), in parallel.
+  result.visible.resize(pixels);
+  result.depth.resize(pixels);
+  result.count.resize(pixels * lights);
+  result.uncertain.resize(pixels);
 
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  const int bands =
+  // Rows go out in chunks to whichever worker is free: the work per row
+  // varies tenfold (a mesh in one part of the picture, its shadow polygons
+  // crossing some rows only), so a fixed split into one band per thread left
+  // a thread idle for much of the frame. Each chunk restarts its active lists
+  // from the y buckets, which costs one pass over the edges started above it:
+  // eight chunks per thread keeps that small.
+  const int workers =
       static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
-  // Each row is computed from the shared read-only scene alone, so the split
-  // into bands cannot change any value: results are identical for any count.
-  std::vector<std::uint64_t> spans(static_cast<std::size_t>(bands), 0);
-  const auto run_band = [&](int b) {
-    const int row0 = static_cast<int>(static_cast<long long>(frame.height) * b / bands);
-    const int row1 = static_cast<int>(static_cast<long long>(frame.height) * (b + 1) / bands);
+  constexpr int kBand = detail::Band::kBandRows;
+  const int rows_per_chunk =
+      ((frame.height + 8 * workers - 1) / (8 * workers) + kBand - 1) / kBand * kBand;
+  const int chunks = (frame.height + rows_per_chunk - 1) / rows_per_chunk;
+  // Each row is computed from the shared read-only scene alone, so neither
+  // the chunks nor which worker takes them can change any value: results are
+  // identical for any thread count.
+  std::vector<std::uint64_t> spans(static_cast<std::size_t>(workers), 0);
+  std::vector<std::uint64_t> skipped(static_cast<std::size_t>(workers), 0);
+  std::atomic<int> next{0};
+  const auto work = [&](int w) {
     detail::Band band(scene, result, progress);
-    band.run(row0, row1);
-    spans[static_cast<std::size_t>(b)] = band.spans();
+    for (int c = next++; c < chunks; c = next++)
+      band.run(c * rows_per_chunk, std::min(frame.height, (c + 1) * rows_per_chunk));
+    spans[static_cast<std::size_t>(w)] = band.spans();
+    skipped[static_cast<std::size_t>(w)] = band.shadow_bands_skipped();
   };
   {
-    std::vector<std::jthread> workers;
-    for (int b = 1; b < bands; ++b) workers.emplace_back(run_band, b);
-    run_band(0);
+    std::vector<std::jthread> pool;
+    for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
+    work(0);
   }
 
   for (const std::uint64_t n : spans) result.spans += n;
+  for (const std::uint64_t n : skipped) result.shadow_bands_skipped += n;
 
   // A polygon within near_radius of the eye may be met by sample rays at
   // z < z_near, which the clipping removed: nothing is certain then.

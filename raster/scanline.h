@@ -5,6 +5,7 @@
 // again exactly; every other pixel's answer is final.
 #include <geometry/sample_ray.h>
 #include <raster/progress.h>
+#include <raster/uninitialized.h>
 
 #include <cstdint>
 #include <span>
@@ -33,26 +34,34 @@ struct RasterPolygon {
 struct ScanlineResult {
   int width = 0, height = 0;
   std::size_t lights = 0;
-  std::vector<std::int32_t> visible;  ///< surface id per pixel; -1 where the ray hits nothing
-  std::vector<double> depth;          ///< ray parameter t of the visible hit (infinity if none)
+  /// Every element of every buffer below is written by the render.
+  UninitializedVector<std::int32_t>
+      visible;                        ///< surface id per pixel; -1 where the ray hits nothing
+  UninitializedVector<double> depth;  ///< ray parameter t of the visible hit (infinity if none)
   /// [pixel * lights + light]: the summed weights of the shadow polygons in
   /// front of the hit, plus, for every twisted group whose flag differs at
   /// the hit from its value at the eye, +1 (set there) or -1 (cleared there);
   /// the count at the eye is the caller's. 0 where the ray hits nothing:
   /// spans without a surface are skipped.
-  std::vector<std::int32_t> count;
-  std::vector<std::uint8_t> uncertain;
+  UninitializedVector<std::int32_t> count;
+  UninitializedVector<std::uint8_t> uncertain;
   /// Spans shaded: runs of pixels between consecutive crossings of surface
   /// edges that hold a surface (shadow polygons' edges cut no spans).
   std::uint64_t spans = 0;
+  /// (shadow polygon, band of rows) pairs skipped whole because the polygon
+  /// lies clearly behind every visible point round its part in the band
+  /// (Bergeron's saving, Band::behind_band in scanline.cpp).
+  std::uint64_t shadow_bands_skipped = 0;
 };
 
 /// `group_start` holds every group's flag at the eye (0 or 1); polygons may
 /// name groups below its size only.
 /// `progress`, if given, is advanced by one per finished row.
+/// `skip_hidden_shadows` = false scans every shadow polygon on every row: the
+/// same result, slower (tests compare the two).
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start = {},
-                               Progress* progress = nullptr);
+                               Progress* progress = nullptr, bool skip_hidden_shadows = true);
 
 }  // namespace umbra::raster
