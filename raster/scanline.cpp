@@ -316,14 +316,22 @@ class Band {
     ray_length_.resize(band_pixels);
     visible_error_.resize(band_pixels);
     crossings_.clear();
-    shadow_crossings_.clear();
-    near_edges_.clear();
-    // Start the active edge lists at row0: every edge active there.
-    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k)
-      if (scene_.by_scan_row_last[k] >= row0) activate(k);
+    shadow_edges_.clear();
+    strips_.clear();
+    // Start the lists at row0: every edge active there, every strip that
+    // meets it. The shadow pass takes the buckets of later rows a band at a
+    // time (start_shadow_band), the surface pass row by row.
+    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
+      if (scene_.by_scan_row_last[k] < row0) continue;
+      if (scene_.by_scan_row_shadow[k])
+        shadow_edges_.push_back(make_shadow_edge(k));
+      else
+        activate(k);
+    }
+    std::sort(shadow_edges_.begin(), shadow_edges_.end(), by_edge);
     for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k)
-      if (scene_.by_near_row_last[k] >= row0)
-        near_edges_.push_back(make_strip(scene_.by_near_row[k]));
+      if (scene_.by_near_row_last[k] >= row0) strips_.push_back(make_strip(k));
+    taken_ = row0 + 1;
     for (int b0 = row0; b0 < row1; b0 += kBandRows) {
       band0_ = b0;
       band1_ = std::min(row1, b0 + kBandRows);
@@ -341,18 +349,11 @@ class Band {
         scan_row(j, carried);
       }
       bound_band_depth();
+      start_shadow_band();
       // The band's shadow polygons and the strips round every edge.
       for (int j = b0; j < band1_; ++j) {
         row_base_ = static_cast<std::size_t>(j - b0) * width;
-        std::erase_if(shadow_crossings_, [&](const Crossing& c) { return c.last < j; });
-        const std::size_t carried = j > row0 ? shadow_crossings_.size() : 0;
-        if (j > row0) {
-          for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
-            if (scene_.by_scan_row_shadow[k]) activate(k);
-          for (std::size_t k = scene_.near_bucket[j]; k < scene_.near_bucket[j + 1]; ++k)
-            near_edges_.push_back(make_strip(scene_.by_near_row[k]));
-        }
-        scan_shadows(j, carried);
+        scan_shadows(j);
         if (progress_) progress_->advance();
       }
     }
@@ -377,21 +378,38 @@ class Band {
   struct NearStrip {
     double x0, slope, half_width, x_lo, x_hi;  ///< TableEdge::strip_*
     std::uint32_t edge;
-    int last;  ///< last row of the strip
+    std::uint32_t polygon;
+    int first, last;  ///< the strip's rows
+    bool shadow;
   };
+  /// A shadow polygon's edge in the shadow pass's lists, which are kept a
+  /// band at a time: the rows on which it is active, and its line.
+  struct ShadowEdge {
+    Vec3 m;  ///< the edge's homogeneous line (ProjectedEdge::m)
+    std::uint32_t edge;
+    std::uint32_t polygon;
+    int first, last;
+  };
+  static bool by_edge(const ShadowEdge& a, const ShadowEdge& b) { return a.edge < b.edge; }
 
-  /// The edge at place k of the y bucket sort enters the surfaces' or the
-  /// shadow polygons' active list.
+  /// The surface edge at place k of the y bucket sort enters the active list.
   void activate(std::size_t k) {
     const std::uint32_t e = scene_.by_scan_row[k];
     const TableEdge& t = scene_.edges[e];
-    (scene_.by_scan_row_shadow[k] ? shadow_crossings_ : crossings_)
-        .push_back({0, t.edge.m, e, t.edge.polygon, t.scan.last});
+    crossings_.push_back({0, t.edge.m, e, t.edge.polygon, t.scan.last});
   }
-  NearStrip make_strip(std::uint32_t k) const {
-    const TableEdge& t = scene_.edges[k];
-    return {t.strip_x0, t.strip_slope, t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
-            k,          t.near.last};
+  /// The shadow edge at place k of the y bucket sort.
+  ShadowEdge make_shadow_edge(std::size_t k) const {
+    const std::uint32_t e = scene_.by_scan_row[k];
+    const TableEdge& t = scene_.edges[e];
+    return {t.edge.m, e, t.edge.polygon, t.scan.first, t.scan.last};
+  }
+  /// The strip of the edge at place k of the near rows' bucket sort.
+  NearStrip make_strip(std::size_t k) const {
+    const std::uint32_t e = scene_.by_near_row[k];
+    const TableEdge& t = scene_.edges[e];
+    return {t.strip_x0, t.strip_slope,  t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
+            e,          t.edge.polygon, t.near.first,       t.near.last,  t.shadow};
   }
 
   std::size_t pixel(int i, int j) const {
@@ -401,12 +419,12 @@ class Band {
   /// Pixel x at which edge e crosses row j's centre line, from the edge's
   /// homogeneous line (well conditioned even when an endpoint was clipped far
   /// off screen); endpoint interpolation only for a line with m.x = 0.
-  double crossing_x(const Crossing& c, int j) const {
+  double crossing_x(const Vec3& m, std::uint32_t edge, int j) const {
     const double sy = scene_.camera.row_screen_y(j);
-    const double sx = -(c.m.y * sy + c.m.z) / c.m.x;
+    const double sx = -(m.y * sy + m.z) / m.x;
     double x = scene_.camera.pixel_x(sx);
     if (!std::isfinite(x)) {
-      const ProjectedEdge& e = scene_.edges[c.edge].edge;
+      const ProjectedEdge& e = scene_.edges[edge].edge;
       const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
       x = e.xa + lambda * (e.xb - e.xa);
     }
@@ -433,7 +451,7 @@ class Band {
     // x sort: insertion sort of the carried crossings (nearly sorted since
     // the previous row), the new ones sorted apart, then one merge.
 
-    for (Crossing& c : crossings_) c.x = crossing_x(c, j);
+    for (Crossing& c : crossings_) c.x = crossing_x(c.m, c.edge, j);
     const auto less = [](const Crossing& a, const Crossing& b) {
       return a.x < b.x || (a.x == b.x && a.edge < b.edge);
     };
@@ -464,32 +482,59 @@ class Band {
     surfaces_.clear();
   }
 
-  /// Row j's shadow polygons, once its visible points are known
-  /// (Bergeron's saving: a shadow polygon behind the visible point changes
-  /// nothing, so shadow polygons need no place in the spans' depth order,
-  /// nor in the x sort of the surfaces' edges, where tens of thousands of
-  /// them would cut the row into spans of a pixel or less). Each shadow
-  /// polygon covers the pixels between pairs of its own crossings of the
-  /// row; at each such pixel with a visible point it is compared with that
-  /// point alone. Then the strips round every edge are flagged.
-  /// shadow_crossings_ is kept in edge order, which groups each polygon's
-  /// edges together; [0, carried) was so ordered on the row before.
-  void scan_shadows(int j, std::size_t carried) {
+  /// The shadow pass's lists for the current band, once its visible points
+  /// are known: shadow_edges_ gets the edges that start in the band and
+  /// loses those that ended before it (kept in edge order, which groups each
+  /// polygon's edges together), strips_ likewise; then live_ and
+  /// band_strips_ keep only what belongs to no shadow polygon found behind
+  /// the band (behind_in_band), which is most of them: the rows of the band
+  /// walk these shorter lists.
+  void start_shadow_band() {
+    const int b0 = band0_;
+    std::erase_if(shadow_edges_, [&](const ShadowEdge& e) { return e.last < b0; });
+    std::erase_if(strips_, [&](const NearStrip& e) { return e.last < b0; });
+    const std::size_t carried = shadow_edges_.size();
+    for (; taken_ < band1_; ++taken_) {
+      for (std::size_t k = scene_.scan_bucket[taken_]; k < scene_.scan_bucket[taken_ + 1]; ++k)
+        if (scene_.by_scan_row_shadow[k]) shadow_edges_.push_back(make_shadow_edge(k));
+      for (std::size_t k = scene_.near_bucket[taken_]; k < scene_.near_bucket[taken_ + 1]; ++k)
+        strips_.push_back(make_strip(k));
+    }
+    const auto middle = shadow_edges_.begin() + static_cast<std::ptrdiff_t>(carried);
+    std::sort(middle, shadow_edges_.end(), by_edge);
+    std::inplace_merge(shadow_edges_.begin(), middle, shadow_edges_.end(), by_edge);
+    live_.clear();
+    for (std::size_t k = 0; k < shadow_edges_.size();) {
+      const std::uint32_t polygon = shadow_edges_[k].polygon;
+      std::size_t end = k;
+      while (end < shadow_edges_.size() && shadow_edges_[end].polygon == polygon) ++end;
+      if (!behind_in_band(polygon))
+        live_.insert(live_.end(), shadow_edges_.begin() + static_cast<std::ptrdiff_t>(k),
+                     shadow_edges_.begin() + static_cast<std::ptrdiff_t>(end));
+      k = end;
+    }
+    band_strips_.clear();
+    for (const NearStrip& strip : strips_)
+      if (!(strip.shadow && behind_in_band(strip.polygon))) band_strips_.push_back(strip);
+  }
+
+  /// Row j's shadow polygons (Bergeron's saving: a shadow polygon behind the
+  /// visible point changes nothing, so shadow polygons need no place in the
+  /// spans' depth order, nor in the x sort of the surfaces' edges, where tens
+  /// of thousands of them would cut the row into spans of a pixel or less).
+  /// Each live shadow polygon covers the pixels between pairs of its own
+  /// crossings of the row; at each such pixel with a visible point it is
+  /// compared with that point alone. Then the strips round every edge are
+  /// flagged.
+  void scan_shadows(int j) {
     const int width = scene_.camera.frame.width;
-    const auto middle = shadow_crossings_.begin() + static_cast<std::ptrdiff_t>(carried);
-    const auto by_edge = [](const Crossing& a, const Crossing& b) { return a.edge < b.edge; };
-    std::sort(middle, shadow_crossings_.end(), by_edge);
-    std::inplace_merge(shadow_crossings_.begin(), middle, shadow_crossings_.end(), by_edge);
-    for (std::size_t k = 0; k < shadow_crossings_.size();) {
-      const std::uint32_t polygon = shadow_crossings_[k].polygon;
-      if (behind_in_band(polygon)) {
-        while (k < shadow_crossings_.size() && shadow_crossings_[k].polygon == polygon) ++k;
-        continue;
-      }
+    for (std::size_t k = 0; k < live_.size();) {
+      const std::uint32_t polygon = live_[k].polygon;
       columns_.clear();
-      for (; k < shadow_crossings_.size() && shadow_crossings_[k].polygon == polygon; ++k) {
-        const double x = crossing_x(shadow_crossings_[k], j);
-        columns_.push_back(clamp_column(std::ceil(x - 0.5), width));
+      for (; k < live_.size() && live_[k].polygon == polygon; ++k) {
+        const ShadowEdge& e = live_[k];
+        if (e.first > j || e.last < j) continue;
+        columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.edge, j) - 0.5), width));
       }
       // Pixel i is inside when an odd number of the polygon's crossings lie
       // at columns <= i: the even-odd rule of the span walk, whose spans
@@ -651,17 +696,8 @@ class Band {
   void flag_near_edges(int j) {
     const int width = scene_.camera.frame.width;
     const double row_y = j + 0.5;
-    // Strips flag pixels independently of each other, so their order is
-    // free: an ended strip takes the last one's place instead of every later
-    // strip moving down one.
-    for (std::size_t k = 0; k < near_edges_.size();) {
-      const NearStrip& strip = near_edges_[k];
-      if (strip.last < j) {
-        near_edges_[k] = near_edges_.back();
-        near_edges_.pop_back();
-        continue;
-      }
-      ++k;
+    for (const NearStrip& strip : band_strips_) {
+      if (strip.first > j || strip.last < j) continue;
       const double x = strip.x0 + row_y * strip.slope;
       const double x_lo = std::max(x - strip.half_width, strip.x_lo);
       const double x_hi = std::min(x + strip.half_width, strip.x_hi);
@@ -675,8 +711,6 @@ class Band {
   /// The pixels [i0, i1) of row j in the strip of edge e: the distance test.
   void flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
     const ProjectedEdge& e = t.edge;
-    // A shadow polygon behind every visible point round it matters nowhere.
-    if (t.shadow && behind_in_band(e.polygon)) return;
     const double row_y = j + 0.5;
     double extra = 0;
     if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
@@ -768,8 +802,10 @@ class Band {
   /// < 0.25, and the rounding of the clip), lies in a screen box; over the
   /// box its plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is smallest at
   /// a corner when n·d keeps one sign, and its error bound
-  /// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest and
-  /// |t·d − p0| largest, at corners too. If the smallest depth, less a
+  /// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest (n·d
+  /// is linear) and |t·d − p0| largest; the latter is at most
+  /// t·|d|₁ + |p0|, a convex function over a positive linear one, hence
+  /// quasi-convex and largest at a corner too. If the smallest depth, less a
   /// millionth (far above the rounding of these few operations and of the
   /// sample rays, given |n·d| ≥ 1e-6·|n||d|) and less that error, exceeds the
   /// box's largest visible-depth bound (plus too_close's 1e-9·z_near), then
@@ -802,6 +838,7 @@ class Band {
     const double visible = band_depth_bound(i0, i1);
     if (visible == -kInfinity) return true;  // nothing seen: no count to change
     const double ah = frame.a * frame.h;
+    const double n_length2 = polygon.n_length * polygon.n_length;
     double t_min = kInfinity, offset = 0, denominator = kInfinity;
     int sign = 0;
     for (const double x : {x_lo, x_hi})
@@ -809,14 +846,17 @@ class Band {
         const Vec3 d{(2.0 * x / frame.width - 1.0) * ah, (1.0 - 2.0 * y / frame.height) * frame.h,
                      1.0};
         const double n_d = dot(polygon.n, d);
-        if (!(std::abs(n_d) >= 1e-6 * polygon.n_length * length(d))) return false;
+        // |n·d| ≥ 1e-6·|n||d|, squared: no square root.
+        if (!(n_d * n_d >= 1e-12 * n_length2 * dot(d, d))) return false;
         const int s = n_d > 0 ? 1 : -1;
         if (sign != 0 && s != sign) return false;
         sign = s;
         const double t = polygon.n_dot_p0 / n_d;
         if (!(t > 0)) return false;
         t_min = std::min(t_min, t);
-        offset = std::max(offset, length(t * d - polygon.p0));
+        // |t·d − p0| ≤ t·|d|₁ + |p0|: a larger offset only makes the error
+        // bound larger.
+        offset = std::max(offset, t * (std::abs(d.x) + std::abs(d.y) + 1) + polygon.p0_length);
         denominator = std::min(denominator, std::abs(n_d));
       }
     const double error = polygon.depth_error_of(offset, denominator);
@@ -840,16 +880,19 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
-  std::uint64_t spans_ = 0;                 // spans shaded by this worker
-  std::uint64_t skipped_ = 0;               // (polygon, band) pairs it found behind
-  std::vector<Crossing> crossings_;         // the surfaces' active edge list, x-sorted
-  std::vector<Crossing> shadow_crossings_;  // the shadow polygons' active edges, in edge order
-  std::vector<int> columns_;                // one shadow polygon's crossing columns on the row
-  std::vector<NearStrip> near_edges_;       // edges whose strip meets the row
-  std::vector<std::uint8_t> inside_;        // per polygon: even-odd state along the row
-  std::vector<std::uint32_t> slot_;         // per polygon: its place in surfaces_
-  std::vector<std::uint32_t> surfaces_;     // surfaces inside at the current span
-  std::vector<DepthEntry> order_;           // the span's depth-ordered list
+  std::uint64_t spans_ = 0;               // spans shaded by this worker
+  std::uint64_t skipped_ = 0;             // (polygon, band) pairs it found behind
+  std::vector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
+  std::vector<ShadowEdge> shadow_edges_;  // shadow edges active in the band, in edge order
+  std::vector<ShadowEdge> live_;          // those of polygons not behind the band
+  int taken_ = 0;                         // bucket rows below this are in the lists
+  std::vector<int> columns_;              // one shadow polygon's crossing columns on the row
+  std::vector<NearStrip> strips_;         // strips that meet the band
+  std::vector<NearStrip> band_strips_;    // those not of a shadow polygon behind the band
+  std::vector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
+  std::vector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
+  std::vector<std::uint32_t> surfaces_;   // surfaces inside at the current span
+  std::vector<DepthEntry> order_;         // the span's depth-ordered list
   std::vector<Vec3> ray_;              // the band's sample directions in camera space, row by row
   std::vector<double> ray_length_;     // their lengths
   std::vector<double> visible_error_;  // depth error bound of each pixel's visible hit
