@@ -50,7 +50,7 @@ struct ScanlineResult {
   std::uint64_t spans = 0;
   /// (shadow polygon, band of rows) pairs skipped whole because the polygon
   /// lies clearly behind every visible point round its part in the band
-  /// (Bergeron's saving, Band::behind_band in scanline.cpp).
+  /// (Bergeron's saving, Band::behind_band in scanline_shadows.cpp).
   std::uint64_t shadow_bands_skipped = 0;
 };
 

@@ -1,0 +1,100 @@
+// Band::run, the order of a worker's rows: each band of rows goes through
+// the surface pass, then the shadow pass; the active lists and the edge
+// crossings they are built from.
+#include <raster/scanline_band.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace umbra::raster::detail {
+
+/// Rows [row0, row1). A worker may run several such chunks one after the
+/// other; each starts its active lists afresh.
+void Band::run(int row0, int row1) {
+  const int width = scene_.camera.frame.width;
+  const std::size_t band_pixels = static_cast<std::size_t>(kBandRows) * width;
+  ray_.resize(band_pixels);
+  ray_length_.resize(band_pixels);
+  visible_error_.resize(band_pixels);
+  crossings_.clear();
+  shadow_edges_.clear();
+  strips_.clear();
+  // Start the lists at row0: every edge active there, every strip that
+  // meets it. The shadow pass takes the buckets of later rows a band at a
+  // time (start_shadow_band), the surface pass row by row.
+  for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
+    if (scene_.by_scan_row_last[k] < row0) continue;
+    if (scene_.by_scan_row_shadow[k])
+      shadow_edges_.push_back(make_shadow_edge(k));
+    else
+      activate(k);
+  }
+  std::sort(shadow_edges_.begin(), shadow_edges_.end(), by_edge);
+  for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k)
+    if (scene_.by_near_row_last[k] >= row0) strips_.push_back(make_strip(k));
+  taken_ = row0 + 1;
+  for (int b0 = row0; b0 < row1; b0 += kBandRows) {
+    band0_ = b0;
+    band1_ = std::min(row1, b0 + kBandRows);
+    // The band's surfaces: visible points, depths and their errors.
+    for (int j = b0; j < band1_; ++j) {
+      row_base_ = static_cast<std::size_t>(j - b0) * width;
+      std::erase_if(crossings_, [&](const Crossing& c) { return c.last < j; });
+      // Edges carried over from the previous row stay nearly sorted; the
+      // row's new edges are sorted apart and merged in (appending them to
+      // an insertion sort would move each across the whole list).
+      const std::size_t carried = j > row0 ? crossings_.size() : 0;
+      if (j > row0)
+        for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
+          if (!scene_.by_scan_row_shadow[k]) activate(k);
+      scan_row(j, carried);
+    }
+    bound_band_depth();
+    start_shadow_band();
+    // The band's shadow polygons and the strips round every edge.
+    for (int j = b0; j < band1_; ++j) {
+      row_base_ = static_cast<std::size_t>(j - b0) * width;
+      scan_shadows(j);
+      if (progress_) progress_->advance();
+    }
+  }
+}
+
+/// The surface edge at place k of the y bucket sort enters the active list.
+void Band::activate(std::size_t k) {
+  const std::uint32_t e = scene_.by_scan_row[k];
+  const TableEdge& t = scene_.edges[e];
+  crossings_.push_back({0, t.edge.m, e, t.edge.polygon, t.scan.last});
+}
+
+/// The shadow edge at place k of the y bucket sort.
+Band::ShadowEdge Band::make_shadow_edge(std::size_t k) const {
+  const std::uint32_t e = scene_.by_scan_row[k];
+  const TableEdge& t = scene_.edges[e];
+  return {t.edge.m, e, t.edge.polygon, t.scan.first, t.scan.last};
+}
+
+/// The strip of the edge at place k of the near rows' bucket sort.
+Band::NearStrip Band::make_strip(std::size_t k) const {
+  const std::uint32_t e = scene_.by_near_row[k];
+  const TableEdge& t = scene_.edges[e];
+  return {t.strip_x0, t.strip_slope,  t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
+          e,          t.edge.polygon, t.near.first,       t.near.last,  t.shadow};
+}
+
+/// Pixel x at which edge e crosses row j's centre line, from the edge's
+/// homogeneous line (well conditioned even when an endpoint was clipped far
+/// off screen); endpoint interpolation only for a line with m.x = 0.
+double Band::crossing_x(const Vec3& m, std::uint32_t edge, int j) const {
+  const double sy = scene_.camera.row_screen_y(j);
+  const double sx = -(m.y * sy + m.z) / m.x;
+  double x = scene_.camera.pixel_x(sx);
+  if (!std::isfinite(x)) {
+    const ProjectedEdge& e = scene_.edges[edge].edge;
+    const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
+    x = e.xa + lambda * (e.xb - e.xa);
+  }
+  return x;
+}
+
+}  // namespace umbra::raster::detail

@@ -1,0 +1,95 @@
+// The uncertainty flags of the scanline: pixels a floating-point decision
+// could have got wrong, near an edge's line or under a degenerate polygon,
+// are flagged for the exact fallback.
+#include <raster/scanline_band.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace umbra::raster::detail {
+
+/// The span walk above decides, for each polygon and pixel, on which side of
+/// each of the polygon's projected edges the pixel centre lies. Flag every
+/// pixel whose centre lies within δ_xy = 1e-6 pixel of the line of an edge
+/// of a polygon that matters to it (a surface not clearly behind the visible
+/// point, any shadow polygon not clearly behind it), measured as a distance,
+/// not along the row, so nearly horizontal edges are caught too.
+///
+/// The test is on the homogeneous line m of the edge: the screen distance
+/// from the pixel centre q = d/d_z to the line is |m·d| / (|d_z|·|(m_x, m_y)|).
+/// Besides 1e-6 pixel we allow the rounding error of m·d itself: m = Pa × Pb
+/// from camera-space points each within a few ε·mag of exact, so
+/// |Δ(m·d)| ≤ few·ε·mag·(|Pa| + |Pb|)·|d|, which 1e-12·m_scale·|d| bounds
+/// generously. This replaces "1e-6 × the coordinates involved": huge
+/// projected coordinates of clipped vertices do not enter it.
+///
+/// Where the row passes within an endpoint's pixel error of that endpoint,
+/// whether the edge is active on the row at all was decided in rounded
+/// arithmetic; the pixels whose answer that can change lie within that
+/// error of the edge's line, so the threshold grows by it on that row only.
+void Band::flag_near_edges(int j) {
+  const int width = scene_.camera.frame.width;
+  const double row_y = j + 0.5;
+  for (const NearStrip& strip : band_strips_) {
+    if (strip.first > j || strip.last < j) continue;
+    const double x = strip.x0 + row_y * strip.slope;
+    const double x_lo = std::max(x - strip.half_width, strip.x_lo);
+    const double x_hi = std::min(x + strip.half_width, strip.x_hi);
+    int i0 = clamp_column(std::ceil(x_lo - 0.5), width);
+    int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
+    if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
+    if (i0 < i1) flag_near_edge(scene_.edges[strip.edge], i0, i1, j);
+  }
+}
+
+/// The pixels [i0, i1) of row j in the strip of edge e: the distance test.
+void Band::flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
+  const ProjectedEdge& e = t.edge;
+  const double row_y = j + 0.5;
+  double extra = 0;
+  if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);
+  if (std::abs(row_y - e.yb) <= e.err_b) extra = std::max(extra, e.err_b);
+  const double scale = (1e-6 + extra) * scene_.camera.pixel_size * t.hyp;
+  for (int i = i0; i < i1; ++i) {
+    const std::size_t p = pixel(i, j);
+    if (result_.uncertain[p]) continue;
+    // Where nothing is seen a shadow polygon changes nothing (matters()),
+    // decided here before the distance test.
+    if (t.shadow && result_.visible[p] < 0) continue;
+    const Vec3& d = ray_[row_base_ + i];
+    const double threshold = scale * std::abs(d.z) + t.rounding * ray_length_[row_base_ + i];
+    if (std::abs(dot(e.m, d)) > threshold) continue;
+    if (matters(scene_.polygons[e.polygon], i, p)) result_.uncertain[p] = 1;
+  }
+}
+
+/// Could this polygon change pixel p's answer if the pixel were on the other
+/// side of one of its edges? Not if it is clearly behind the visible point.
+bool Band::matters(const ProjectedPolygon& polygon, int i, std::size_t p) const {
+  // Where nothing is seen a shadow polygon changes nothing (a surface
+  // whose edge passes close flags the pixel through its own edge strip).
+  if (result_.visible[p] < 0) return polygon.kind == RasterPolygon::Kind::surface;
+  const Vec3& d = ray_[row_base_ + i];
+  double t = polygon.depth(d);
+  if (std::isnan(t)) return true;
+  const double err = polygon.depth_error(d, t);
+  const double t_visible = result_.depth[p];
+  return !(t > t_visible &&
+           !too_close(t, err, t_visible, visible_error_[row_base_ + i], scene_.camera.z_near));
+}
+
+/// A polygon with no projected area is not drawn; every pixel of its
+/// bounding box (plus a pixel) is flagged, whatever its depth.
+void Band::flag_degenerate(int j) {
+  const int width = scene_.camera.frame.width;
+  const double row_y = j + 0.5;
+  for (std::uint32_t k : scene_.degenerate) {
+    const ProjectedPolygon& polygon = scene_.polygons[k];
+    if (row_y < polygon.bbox_y0 - 1 || row_y > polygon.bbox_y1 + 1) continue;
+    const int i0 = clamp_column(std::ceil(polygon.bbox_x0 - 1.5), width);
+    const int i1 = clamp_column(std::floor(polygon.bbox_x1 + 0.5) + 1, width);
+    for (int i = i0; i < i1; ++i) result_.uncertain[pixel(i, j)] = 1;
+  }
+}
+
+}  // namespace umbra::raster::detail

@@ -1,0 +1,187 @@
+// Preparing the scanline's input (scanline_scene.h): projection, the edge
+// table and its bucket sorts, the strips' geometry.
+#include <raster/parallel_rows.h>
+#include <raster/scanline_scene.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace umbra::raster::detail {
+
+RowRange active_rows(double y0, double y1, int height) {
+  const double lo = std::ceil(std::min(y0, y1) - 0.5);
+  const double hi = std::ceil(std::max(y0, y1) - 0.5) - 1;
+  RowRange r;
+  r.first = lo < 0 ? 0 : (lo > height ? height : static_cast<int>(lo));
+  r.last = hi < -1 ? -1 : (hi > height - 1 ? height - 1 : static_cast<int>(hi));
+  return r;
+}
+namespace {
+
+void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range, int height,
+                 std::vector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
+                 std::vector<int>& last, std::vector<std::uint8_t>& shadow) {
+  bucket.assign(static_cast<std::size_t>(height) + 2, 0);
+  for (const TableEdge& e : edges)
+    if ((e.*range).first <= (e.*range).last) ++bucket[(e.*range).first + 1];
+  for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
+  order.assign(bucket[height], 0);
+  std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+  for (std::uint32_t k = 0; k < edges.size(); ++k)
+    if ((edges[k].*range).first <= (edges[k].*range).last)
+      order[fill[(edges[k].*range).first]++] = k;
+  last.resize(order.size());
+  shadow.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    last[k] = (edges[order[k]].*range).last;
+    shadow[k] = edges[order[k]].shadow;
+  }
+}
+
+/// Edge e of a projected polygon as the y bucket sort holds it.
+TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double ray_slant) {
+  const geometry::CameraFrame& frame = camera.frame;
+  TableEdge t;
+  t.edge = e;
+  t.scan = active_rows(e.ya, e.yb, frame.height);
+  // The strip examined round the edge must hold every pixel whose centre
+  // can pass the distance test of flag_near_edges: 1e-6 px, the largest
+  // value of the rounding term 1e-12·m_scale·|d| in pixels, and the
+  // endpoints' own errors. The strip's bounds are computed in floating
+  // point too (row ± margin, the segment cut at those heights): a
+  // thousandth of a pixel, plus a term that grows with the coordinates
+  // for edges whose clipped endpoints lie far off screen, covers that
+  // rounding with a wide margin. The strip is kept this narrow on
+  // purpose: with many lights tens of thousands of shadow edges cross
+  // every row, and each pixel in a strip costs a distance test.
+  const double hyp = std::hypot(e.m.x, e.m.y);
+  const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
+  const double coordinate_rounding = 1e-14 * (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) *
+                                     (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1);
+  t.near_margin = 1e-3 + coordinate_rounding + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
+  if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
+  t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin, std::max(e.ya, e.yb) + t.near_margin,
+                       frame.height);
+  // active_rows is half-open at the bottom; the strip is closed.
+  if (t.near.last < frame.height - 1 &&
+      t.near.last + 1 + 0.5 <= std::max(e.ya, e.yb) + t.near_margin)
+    ++t.near.last;
+  t.hyp = hyp;
+  t.rounding = 1e-12 * e.m_scale;
+  // The strip on a row: the pixel centres within `margin` of the segment's
+  // part at heights within `margin` of the row, where margin also holds the
+  // widening flag_near_edges applies on rows through an endpoint. Such a
+  // centre lies within margin·(1 + |dx/dy|) of the segment's line along the
+  // row, and within margin of the segment's x extent. The line is evaluated
+  // as x0 + y·slope; its rounding, at most a few ulps of |ya|·|slope| ≤
+  // |ya|·(|xa| + |xb|) for a segment at least a pixel tall, is in
+  // coordinate_rounding. A segment less than a pixel tall is taken whole
+  // along its x extent: dividing by its height would magnify rounding.
+  const double margin = t.near_margin + std::max(e.err_a, e.err_b);
+  t.strip_x_lo = std::min(e.xa, e.xb) - margin;
+  t.strip_x_hi = std::max(e.xa, e.xb) + margin;
+  if (std::abs(e.yb - e.ya) >= 1) {
+    t.strip_slope = (e.xb - e.xa) / (e.yb - e.ya);
+    t.strip_x0 = e.xa - e.ya * t.strip_slope;
+    t.strip_half_width = margin * (1 + std::abs(t.strip_slope));
+  } else {
+    t.strip_half_width = std::numeric_limits<double>::infinity();
+  }
+  if (!std::isfinite(t.strip_x0) || !std::isfinite(t.strip_slope)) {
+    // Off-screen coordinates so large that the line overflows: whole extent.
+    t.strip_x0 = t.strip_slope = 0;
+    t.strip_half_width = std::numeric_limits<double>::infinity();
+  }
+  return t;
+}
+
+/// Calls work(begin, end) over [0, count) in blocks, on up to `threads`
+/// threads; each index is handled alone, so the split changes nothing.
+template <class Work>
+void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
+  constexpr std::size_t kBlock = 2048;
+  const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
+  parallel_rows(blocks, threads, [&](int b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kBlock;
+    work(begin, std::min(count, begin + kBlock));
+  });
+}
+
+/// Input errors are found here, in polygon order, before any work is shared
+/// out: the first bad polygon is the one reported, whatever the threads.
+void check_input(std::span<const RasterPolygon> input, std::size_t lights,
+                 std::span<const std::uint8_t> group_start) {
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].light >= lights)
+      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
+                                  " names light " + std::to_string(input[k].light) + " of " +
+                                  std::to_string(lights));
+    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].group >= 0 &&
+        static_cast<std::size_t>(input[k].group) >= group_start.size())
+      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
+                                  " names group " + std::to_string(input[k].group) + " of " +
+                                  std::to_string(group_start.size()));
+    for (const Vec3& v : input[k].vertices)
+      if (!geometry::is_finite(v))
+        throw std::invalid_argument("scanline_render: polygon " + std::to_string(k) +
+                                    " has a non-finite vertex");
+  }
+}
+
+}  // namespace
+
+Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+              std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads) {
+  check_input(input, lights, group_start);
+  Scene scene;
+  scene.lights = lights;
+  scene.group_start.assign(group_start.begin(), group_start.end());
+  scene.camera = make_camera_space(frame, input);
+  const CameraSpace& camera = scene.camera;
+  // With many lights there are 100k+ polygons to project and edges to
+  // table: shared out, each written to its own slot.
+  scene.polygons.resize(input.size());
+  parallel_blocks(input.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      scene.polygons[k] = project_polygon(input[k], static_cast<std::uint32_t>(k), camera);
+  });
+  const double ah = frame.a * frame.h;
+  // |d| / |d_z| over all sample rays, with 1% slack for rounding.
+  const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
+  std::vector<std::size_t> first_edge(scene.polygons.size() + 1, 0);
+  for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
+    const ProjectedPolygon& polygon = scene.polygons[k];
+    if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
+    first_edge[k + 1] = first_edge[k] + polygon.edges.size();
+  }
+  scene.edges.resize(first_edge.back());
+  scene.cullable.assign(scene.polygons.size(), 0);
+  parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const ProjectedPolygon& polygon = scene.polygons[k];
+      const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
+      // Band::behind_band widens a polygon's box by a pixel, which must hold
+      // its edges' strips and the rounding of its clipped coordinates:
+      // polygons with wider strips or far-off coordinates are always scanned.
+      bool cullable = shadow && polygon.status == ProjectedPolygon::Status::active;
+      for (std::size_t n = 0; n < polygon.edges.size(); ++n) {
+        const ProjectedEdge& e = polygon.edges[n];
+        TableEdge& t = scene.edges[first_edge[k] + n];
+        t = table_edge(e, camera, ray_slant);
+        t.shadow = shadow;
+        cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e9 &&
+                   std::abs(e.ya) < 1e9 && std::abs(e.xb) < 1e9 && std::abs(e.yb) < 1e9;
+      }
+      scene.cullable[k] = cullable;
+    }
+  });
+  bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,
+              scene.by_scan_row_last, scene.by_scan_row_shadow);
+  bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket,
+              scene.by_near_row_last, scene.by_near_row_shadow);
+  return scene;
+}
+
+}  // namespace umbra::raster::detail

@@ -1,0 +1,83 @@
+#pragma once
+// The scanline's shared, read-only input: every polygon projected
+// (projected_polygon.h), every edge in the y bucket sort with the rows on
+// which it is active and the strip round it examined for uncertainty.
+// Prepared once per render, in parallel; read by every worker.
+#include <raster/projected_polygon.h>
+#include <raster/scanline.h>
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace umbra::raster::detail {
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Rows r with centre r + 0.5 in [y0, y1), clamped to [0, height): the
+/// half-open rule every edge uses, so two edges sharing a vertex agree on
+/// which of them crosses a row through that vertex (watertight parity).
+struct RowRange {
+  int first = 0, last = -1;
+};
+RowRange active_rows(double y0, double y1, int height);
+
+/// Column index clamped to [0, width]; NaN goes to 0.
+inline int clamp_column(double c, int width) {
+  if (!(c > 0)) return 0;
+  if (c > width) return width;
+  return static_cast<int>(c);
+}
+
+/// An edge in the y bucket sort, with the rows on which it is active and the
+/// wider range of rows whose pixels may lie close enough to it to be flagged.
+struct TableEdge {
+  ProjectedEdge edge;
+  RowRange scan;
+  RowRange near;
+  double near_margin =
+      0;           ///< half-width (pixels) of the strip round the edge examined for uncertainty
+  double hyp = 0;  ///< |(m.x, m.y)|
+  double rounding = 0;  ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
+  bool shadow = false;  ///< the edge of a shadow polygon
+  /// The strip's pixels on a row with centre height y are those with centre
+  /// x in [strip_x0 + y·strip_slope ∓ strip_half_width] ∩ [strip_x_lo,
+  /// strip_x_hi]: a line and a box, so a row's range costs no division.
+  double strip_x0 = 0, strip_slope = 0, strip_half_width = 0, strip_x_lo = 0, strip_x_hi = 0;
+};
+
+/// Everything the bands share, read-only once built.
+struct Scene {
+  CameraSpace camera;
+  std::vector<ProjectedPolygon> polygons;
+  std::vector<TableEdge> edges;
+  std::vector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
+  std::vector<std::size_t>
+      scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
+  /// scan.last of by_scan_row's edges, in its order: a worker starting a
+  /// chunk of rows reads these front to back to find the edges still active,
+  /// instead of reaching into the edge table once per edge started above.
+  std::vector<int> by_scan_row_last;
+  std::vector<std::uint32_t> by_near_row;
+  std::vector<std::size_t> near_bucket;
+  std::vector<int> by_near_row_last;  ///< near.last of by_near_row's edges
+  /// 1 where by_scan_row's / by_near_row's edge belongs to a shadow polygon:
+  /// the surface pass and the shadow pass take their own edges from the
+  /// same buckets.
+  std::vector<std::uint8_t> by_scan_row_shadow, by_near_row_shadow;
+  /// Per polygon: a shadow polygon whose depth may be bounded over a band
+  /// of rows (band_cull); others are always scanned.
+  std::vector<std::uint8_t> cullable;
+  std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
+  std::size_t lights = 0;
+  std::vector<std::uint8_t> group_start;  ///< every twisted group's flag at the eye
+};
+
+/// Checks the input (throws std::invalid_argument naming the first bad
+/// polygon), then projects every polygon and tables every edge on up to
+/// `threads` threads.
+Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+              std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads);
+
+}  // namespace umbra::raster::detail

@@ -1,0 +1,259 @@
+// The shadow pass of the scanline (Crow, Bergeron): once a band's visible
+// points are known, each shadow polygon adds its signed Nb_C (or toggles its
+// twisted group's flag) at the pixels where it lies between the eye and the
+// visible point; polygons clearly behind every visible point round their
+// part in the band are not scanned there.
+#include <raster/scanline_band.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace umbra::raster::detail {
+
+/// The shadow pass's lists for the current band, once its visible points
+/// are known: shadow_edges_ gets the edges that start in the band and
+/// loses those that ended before it (kept in edge order, which groups each
+/// polygon's edges together), strips_ likewise; then live_ and
+/// band_strips_ keep only what belongs to no shadow polygon found behind
+/// the band (behind_in_band), which is most of them: the rows of the band
+/// walk these shorter lists.
+void Band::start_shadow_band() {
+  const int b0 = band0_;
+  std::erase_if(shadow_edges_, [&](const ShadowEdge& e) { return e.last < b0; });
+  std::erase_if(strips_, [&](const NearStrip& e) { return e.last < b0; });
+  const std::size_t carried = shadow_edges_.size();
+  for (; taken_ < band1_; ++taken_) {
+    for (std::size_t k = scene_.scan_bucket[taken_]; k < scene_.scan_bucket[taken_ + 1]; ++k)
+      if (scene_.by_scan_row_shadow[k]) shadow_edges_.push_back(make_shadow_edge(k));
+    for (std::size_t k = scene_.near_bucket[taken_]; k < scene_.near_bucket[taken_ + 1]; ++k)
+      strips_.push_back(make_strip(k));
+  }
+  const auto middle = shadow_edges_.begin() + static_cast<std::ptrdiff_t>(carried);
+  std::sort(middle, shadow_edges_.end(), by_edge);
+  std::inplace_merge(shadow_edges_.begin(), middle, shadow_edges_.end(), by_edge);
+  live_.clear();
+  for (std::size_t k = 0; k < shadow_edges_.size();) {
+    const std::uint32_t polygon = shadow_edges_[k].polygon;
+    std::size_t end = k;
+    while (end < shadow_edges_.size() && shadow_edges_[end].polygon == polygon) ++end;
+    if (!behind_in_band(polygon))
+      live_.insert(live_.end(), shadow_edges_.begin() + static_cast<std::ptrdiff_t>(k),
+                   shadow_edges_.begin() + static_cast<std::ptrdiff_t>(end));
+    k = end;
+  }
+  band_strips_.clear();
+  for (const NearStrip& strip : strips_)
+    if (!(strip.shadow && behind_in_band(strip.polygon))) band_strips_.push_back(strip);
+}
+
+/// Row j's shadow polygons (Bergeron's saving: a shadow polygon behind the
+/// visible point changes nothing, so shadow polygons need no place in the
+/// spans' depth order, nor in the x sort of the surfaces' edges, where tens
+/// of thousands of them would cut the row into spans of a pixel or less).
+/// Each live shadow polygon covers the pixels between pairs of its own
+/// crossings of the row; at each such pixel with a visible point it is
+/// compared with that point alone. Then the strips round every edge are
+/// flagged.
+void Band::scan_shadows(int j) {
+  const int width = scene_.camera.frame.width;
+  for (std::size_t k = 0; k < live_.size();) {
+    const std::uint32_t polygon = live_[k].polygon;
+    columns_.clear();
+    for (; k < live_.size() && live_[k].polygon == polygon; ++k) {
+      const ShadowEdge& e = live_[k];
+      if (e.first > j || e.last < j) continue;
+      columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.edge, j) - 0.5), width));
+    }
+    // Pixel i is inside when an odd number of the polygon's crossings lie
+    // at columns <= i: the even-odd rule of the span walk, whose spans
+    // start at these columns. So: the pixels between consecutive pairs.
+    std::sort(columns_.begin(), columns_.end());
+    for (std::size_t m = 0; m < columns_.size(); m += 2)
+      shade_shadow(polygon, columns_[m], m + 1 < columns_.size() ? columns_[m + 1] : width, j);
+  }
+  count_groups(j);
+  flag_near_edges(j);
+  flag_degenerate(j);
+}
+
+/// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
+/// point is visible, the polygon adds its weight to its light's count if
+/// it lies between the eye and that point (a twisted one toggles its
+/// group's flag instead, counted by count_groups). Its depth there, against
+/// 0 and against the visible depth, must be clear of both error bounds, or
+/// the pixel is uncertain.
+void Band::shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
+  const ProjectedPolygon& shadow = scene_.polygons[polygon];
+  const double z_near = scene_.camera.z_near;
+  for (int i = i0; i < i1; ++i) {
+    const std::size_t p = pixel(i, j);
+    if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
+    const Vec3& d = ray_[row_base_ + i];
+    double t = shadow.depth(d);
+    if (std::isnan(t)) t = kInfinity;  // ray in the plane; flagged by its error
+    const double t_visible = result_.depth[p];
+    const auto unclear = [&](double err) {
+      return !std::isfinite(err) || too_close(t, err, 0.0, 0.0, z_near) ||
+             too_close(t, err, t_visible, visible_error_[row_base_ + i], z_near);
+    };
+    // depth_error measures |t·d − p0| (a square root); first try the bound
+    // with |t|·|d| + |p0| in its place, which is at least as large (the
+    // factor covers both lengths' rounding). The error bound grows with that
+    // distance and too_close with the error, so a depth clear of this
+    // larger bound is clear of depth_error's: the decision is the same.
+    const double offset_bound =
+        (std::abs(t) * ray_length_[row_base_ + i] + shadow.p0_length) * (1 + 1e-9);
+    if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
+      result_.uncertain[p] = 1;
+    if (!(t > 0 && t < t_visible)) continue;
+    if (shadow.group < 0)
+      result_.count[p * scene_.lights + shadow.light] += shadow.weight;
+    else
+      group_hits_.push_back({static_cast<std::uint32_t>(i), polygon});
+  }
+}
+
+/// Twisted polygons crossed in front of the visible point, per pixel: each
+/// group whose flag ends other than it started (an odd number of its
+/// polygons crossed) changes its light's count by one, +1 where the flag is
+/// set at the hit, -1 where it is cleared.
+void Band::count_groups(int j) {
+  std::sort(group_hits_.begin(), group_hits_.end());
+  for (std::size_t k = 0; k < group_hits_.size();) {
+    const std::uint32_t i = group_hits_[k].first;
+    std::size_t end = k;
+    for (; end < group_hits_.size() && group_hits_[end].first == i; ++end)
+      flags_[static_cast<std::size_t>(scene_.polygons[group_hits_[end].second].group)] ^= 1;
+    const std::size_t p = pixel(static_cast<int>(i), j);
+    for (; k < end; ++k) {
+      const ProjectedPolygon& t = scene_.polygons[group_hits_[k].second];
+      const auto g = static_cast<std::size_t>(t.group);
+      if (flags_[g] != scene_.group_start[g])
+        result_.count[p * scene_.lights + t.light] += flags_[g] ? 1 : -1;
+      flags_[g] = scene_.group_start[g];  // restored for the next pixel
+    }
+  }
+  group_hits_.clear();
+}
+
+/// After the band's surface pass: per column, the largest upper bound
+/// t·(1 + 1e-9) + error on an exact visible depth over the band's rows
+/// (-infinity where nothing is seen), and the sparse table of its maxima
+/// over runs of 2^k columns, so any run's maximum costs two lookups.
+void Band::bound_band_depth() {
+  const int width = scene_.camera.frame.width;
+  const auto w = static_cast<std::size_t>(width);
+  int levels = 1;
+  while ((std::size_t{1} << levels) <= w) ++levels;
+  depth_bound_.resize(static_cast<std::size_t>(levels));
+  std::vector<double>& base = depth_bound_[0];
+  base.assign(w, -kInfinity);
+  for (int j = band0_; j < band1_; ++j)
+    for (int i = 0; i < width; ++i) {
+      const std::size_t p = pixel(i, j);
+      if (result_.visible[p] < 0) continue;
+      const double bound =
+          result_.depth[p] * (1 + 1e-9) +
+          visible_error_[static_cast<std::size_t>(j - band0_) * w + static_cast<std::size_t>(i)];
+      base[static_cast<std::size_t>(i)] = std::max(base[static_cast<std::size_t>(i)], bound);
+    }
+  for (int k = 1; k < levels; ++k) {
+    const std::vector<double>& below = depth_bound_[k - 1];
+    std::vector<double>& level = depth_bound_[k];
+    const std::size_t half = std::size_t{1} << (k - 1);
+    level.resize(w - 2 * half + 1);
+    for (std::size_t i = 0; i < level.size(); ++i) level[i] = std::max(below[i], below[i + half]);
+  }
+}
+
+/// The largest visible-depth bound over columns [i0, i1], i0 <= i1.
+double Band::band_depth_bound(int i0, int i1) const {
+  const auto length = static_cast<unsigned>(i1 - i0 + 1);
+  const int k = std::bit_width(length) - 1;
+  const std::vector<double>& level = depth_bound_[static_cast<std::size_t>(k)];
+  return std::max(level[static_cast<std::size_t>(i0)],
+                  level[static_cast<std::size_t>(i1 - (1 << k) + 1)]);
+}
+
+/// Is shadow polygon `polygon` clearly behind the visible point at every
+/// pixel of the current band where it could count or flag? Judged once
+/// per polygon and band.
+bool Band::behind_in_band(std::uint32_t polygon) {
+  if (!scene_.cullable[polygon]) return false;
+  if (cull_band_[polygon] != band0_) {
+    cull_band_[polygon] = band0_;
+    culled_[polygon] = behind_band(scene_.polygons[polygon]);
+    skipped_ += culled_[polygon];
+  }
+  return culled_[polygon] != 0;
+}
+
+/// Bergeron's saving, a band of rows at a time: a shadow polygon behind the
+/// visible point changes nothing. The polygon's part in the band's rows,
+/// widened by a pixel (which holds its edges' strips, cullable's margin
+/// < 0.25, and the rounding of the clip), lies in a screen box; over the
+/// box its plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is smallest at
+/// a corner when n·d keeps one sign, and its error bound
+/// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest (n·d
+/// is linear) and |t·d − p0| largest; the latter is at most
+/// t·|d|₁ + |p0|, a convex function over a positive linear one, hence
+/// quasi-convex and largest at a corner too. If the smallest depth, less a
+/// millionth (far above the rounding of these few operations and of the
+/// sample rays, given |n·d| ≥ 1e-6·|n||d|) and less that error, exceeds the
+/// box's largest visible-depth bound (plus too_close's 1e-9·z_near), then
+/// at every pixel of the band shade_shadow would find the polygon behind
+/// and clear of both error bounds, and matters() would say no: skipping it
+/// changes no count and no flag.
+bool Band::behind_band(const ProjectedPolygon& polygon) const {
+  const CameraSpace& camera = scene_.camera;
+  const geometry::CameraFrame& frame = camera.frame;
+  const double y0 = band0_ - 0.5, y1 = band1_ + 0.5;
+  double x_lo = kInfinity, x_hi = -kInfinity;
+  for (const ProjectedEdge& e : polygon.edges) {
+    if (std::max(e.ya, e.yb) < y0 || std::min(e.ya, e.yb) > y1) continue;
+    double xa = e.xa, xb = e.xb;
+    if (e.ya != e.yb) {
+      const double l0 = std::clamp((y0 - e.ya) / (e.yb - e.ya), 0.0, 1.0);
+      const double l1 = std::clamp((y1 - e.ya) / (e.yb - e.ya), 0.0, 1.0);
+      xa = e.xa + l0 * (e.xb - e.xa);
+      xb = e.xa + l1 * (e.xb - e.xa);
+    }
+    x_lo = std::min({x_lo, xa, xb});
+    x_hi = std::max({x_hi, xa, xb});
+  }
+  if (!(x_lo <= x_hi)) return true;  // no part in the band's rows
+  x_lo -= 1;
+  x_hi += 1;
+  const int i0 = std::max(0, static_cast<int>(std::ceil(x_lo - 0.5)));
+  const int i1 = std::min(frame.width - 1, static_cast<int>(std::floor(x_hi - 0.5)));
+  if (i0 > i1) return true;  // no pixel centre in the box
+  const double visible = band_depth_bound(i0, i1);
+  if (visible == -kInfinity) return true;  // nothing seen: no count to change
+  const double ah = frame.a * frame.h;
+  const double n_length2 = polygon.n_length * polygon.n_length;
+  double t_min = kInfinity, offset = 0, denominator = kInfinity;
+  int sign = 0;
+  for (const double x : {x_lo, x_hi})
+    for (const double y : {y0, y1}) {
+      const Vec3 d{(2.0 * x / frame.width - 1.0) * ah, (1.0 - 2.0 * y / frame.height) * frame.h,
+                   1.0};
+      const double n_d = dot(polygon.n, d);
+      // |n·d| ≥ 1e-6·|n||d|, squared: no square root.
+      if (!(n_d * n_d >= 1e-12 * n_length2 * dot(d, d))) return false;
+      const int s = n_d > 0 ? 1 : -1;
+      if (sign != 0 && s != sign) return false;
+      sign = s;
+      const double t = polygon.n_dot_p0 / n_d;
+      if (!(t > 0)) return false;
+      t_min = std::min(t_min, t);
+      // |t·d − p0| ≤ t·|d|₁ + |p0|: a larger offset only makes the error
+      // bound larger.
+      offset = std::max(offset, t * (std::abs(d.x) + std::abs(d.y) + 1) + polygon.p0_length);
+      denominator = std::min(denominator, std::abs(n_d));
+    }
+  const double error = polygon.depth_error_of(offset, denominator);
+  return t_min * (1 - 1e-6) - error > visible + 1e-9 * camera.z_near;
+}
+
+}  // namespace umbra::raster::detail
