@@ -14,7 +14,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const std::size_t lights = scene.lights.size();
-  Frame frame(camera.width, camera.height, lights);
+  Frame frame(camera.width, camera.height, lights, options.threads);
   const auto start = std::chrono::steady_clock::now();
   Progress progress(options.progress);
   progress.phase("exact", static_cast<std::uint64_t>(camera.height));

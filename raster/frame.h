@@ -26,13 +26,11 @@ struct Frame {
   std::vector<float> depth;
 
   Frame() = default;
-  Frame(int w, int h, std::size_t lights)
-      : width(w),
-        height(h),
-        beauty(static_cast<std::size_t>(w) * h * 3, 0.0f),
-        shadow(lights, std::vector<float>(static_cast<std::size_t>(w) * h, kShadowLit)),
-        count(lights, std::vector<float>(static_cast<std::size_t>(w) * h, 0.0f)),
-        depth(static_cast<std::size_t>(w) * h, kDepthBackground) {}
+  /// Every buffer filled with its background value. With 16 lights at
+  /// 1280x720 that is 130 MB written (and page-faulted) before the render
+  /// starts, so the buffers are filled on up to `threads` threads (0: every
+  /// hardware thread).
+  Frame(int w, int h, std::size_t lights, unsigned threads = 1);
 
   std::size_t pixel(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }
   std::size_t lights() const { return shadow.size(); }

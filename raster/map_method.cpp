@@ -120,7 +120,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   // that some sample reads; OR-ed from every thread, so order-free.
   std::vector<std::atomic<std::uint32_t>> needed(lights);
   std::atomic<std::uint64_t> fallbacks{0};
-  Frame frame(camera.width, camera.height, lights);
+  Frame frame(camera.width, camera.height, lights, options.threads);
   progress.phase("visible", static_cast<std::uint64_t>(camera.height));
   parallel_rows(camera.height, options.threads, [&](int j) {
     std::vector<std::uint32_t> row_needed(lights, 0);

@@ -134,7 +134,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
 
   // As in the other methods, "decide" includes allocating the frame.
   start = Clock::now();
-  Frame frame(camera.width, camera.height, lights);
+  Frame frame(camera.width, camera.height, lights, options.threads);
   const std::vector<FloatLight> float_light = float_lights(scene);
   const float offset = static_cast<float>(options.ray.epsilon * rt.diagonal());
   stats.ray_offset = offset;

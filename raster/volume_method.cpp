@@ -97,7 +97,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
 
   start = Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
-  Frame frame(camera.width, camera.height, lights);
+  Frame frame(camera.width, camera.height, lights, options.threads);
   std::atomic<std::uint64_t> fallbacks{0};
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
   parallel_rows(camera.height, options.threads, [&](int j) {
