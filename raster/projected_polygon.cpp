@@ -102,7 +102,11 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   if (count == 0) return out;
 
   // Camera space, and the magnitudes the error bounds are stated in.
-  std::vector<Vec3> p(count);
+  // Scratch buffers reused by every call on a thread: prepare projects 100k+
+  // polygons with many lights, and allocating these each time was a visible
+  // part of it.
+  thread_local std::vector<Vec3> p;
+  p.resize(count);
   double max_world = 0, max_camera = 0, reach = 0;
   for (std::size_t i = 0; i < count; ++i) {
     p[i] = camera.to_camera(w[i]);
@@ -161,8 +165,8 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
 
   // Sutherland–Hodgman against z ≥ z_near. Each output vertex remembers the
   // edge that leaves it: part of an original edge, or a piece of the near plane.
-  std::vector<ClipVertex> clipped;
-  clipped.reserve(count + 2);
+  thread_local std::vector<ClipVertex> clipped;
+  clipped.clear();
   const double z_near = camera.z_near;
   for (std::size_t i = 0; i < count; ++i) {
     const Vec3& a = p[i];
@@ -189,7 +193,10 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   // mag/|P| relative error; we bound its pixel error by
   // 1e-13·(mag/|P|)·(|px| + |py| + width + height).
   const std::size_t m = clipped.size();
-  std::vector<double> px(m), py(m), perr(m);
+  thread_local std::vector<double> px, py, perr;
+  px.resize(m);
+  py.resize(m);
+  perr.resize(m);
   out.bbox_x0 = out.bbox_y0 = std::numeric_limits<double>::infinity();
   out.bbox_x1 = out.bbox_y1 = -std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < m; ++k) {

@@ -64,22 +64,22 @@ void Band::run(int row0, int row1) {
 void Band::activate(std::size_t k) {
   const std::uint32_t e = scene_.by_scan_row[k];
   const TableEdge& t = scene_.edges[e];
-  crossings_.push_back({0, t.edge.m, e, t.edge.polygon, t.scan.last});
+  crossings_.push_back({0, t.edge->m, e, t.edge->polygon, t.scan.last});
 }
 
 /// The shadow edge at place k of the y bucket sort.
 Band::ShadowEdge Band::make_shadow_edge(std::size_t k) const {
   const std::uint32_t e = scene_.by_scan_row[k];
   const TableEdge& t = scene_.edges[e];
-  return {t.edge.m, e, t.edge.polygon, t.scan.first, t.scan.last};
+  return {t.edge->m, e, t.edge->polygon, t.scan.first, t.scan.last};
 }
 
 /// The strip of the edge at place k of the near rows' bucket sort.
 Band::NearStrip Band::make_strip(std::size_t k) const {
   const std::uint32_t e = scene_.by_near_row[k];
   const TableEdge& t = scene_.edges[e];
-  return {t.strip_x0, t.strip_slope,  t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
-          e,          t.edge.polygon, t.near.first,       t.near.last,  t.shadow};
+  return {t.strip_x0, t.strip_slope,   t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
+          e,          t.edge->polygon, t.near.first,       t.near.last,  t.shadow};
 }
 
 /// Pixel x at which edge e crosses row j's centre line, from the edge's
@@ -90,7 +90,7 @@ double Band::crossing_x(const Vec3& m, std::uint32_t edge, int j) const {
   const double sx = -(m.y * sy + m.z) / m.x;
   double x = scene_.camera.pixel_x(sx);
   if (!std::isfinite(x)) {
-    const ProjectedEdge& e = scene_.edges[edge].edge;
+    const ProjectedEdge& e = *scene_.edges[edge].edge;
     const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
     x = e.xa + lambda * (e.xb - e.xa);
   }

@@ -44,7 +44,7 @@ void Band::flag_near_edges(int j) {
 
 /// The pixels [i0, i1) of row j in the strip of edge e: the distance test.
 void Band::flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
-  const ProjectedEdge& e = t.edge;
+  const ProjectedEdge& e = *t.edge;
   const double row_y = j + 0.5;
   double extra = 0;
   if (std::abs(row_y - e.ya) <= e.err_a) extra = std::max(extra, e.err_a);

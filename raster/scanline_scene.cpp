@@ -20,7 +20,7 @@ RowRange active_rows(double y0, double y1, int height) {
 }
 namespace {
 
-void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range, int height,
+void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, int height,
                  std::vector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
                  std::vector<int>& last, std::vector<std::uint8_t>& shadow) {
   bucket.assign(static_cast<std::size_t>(height) + 2, 0);
@@ -43,8 +43,8 @@ void bucket_sort(const std::vector<TableEdge>& edges, RowRange TableEdge::*range
 /// Edge e of a projected polygon as the y bucket sort holds it.
 TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double ray_slant) {
   const geometry::CameraFrame& frame = camera.frame;
-  TableEdge t;
-  t.edge = e;
+  TableEdge t{};
+  t.edge = &e;
   t.scan = active_rows(e.ya, e.yb, frame.height);
   // The strip examined round the edge must hold every pixel whose centre
   // can pass the distance test of flag_near_edges: 1e-6 px, the largest

@@ -5,6 +5,7 @@
 // Prepared once per render, in parallel; read by every worker.
 #include <raster/projected_polygon.h>
 #include <raster/scanline.h>
+#include <raster/uninitialized.h>
 
 #include <cstdint>
 #include <limits>
@@ -19,7 +20,7 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// half-open rule every edge uses, so two edges sharing a vertex agree on
 /// which of them crosses a row through that vertex (watertight parity).
 struct RowRange {
-  int first = 0, last = -1;
+  int first, last;  ///< empty when last < first
 };
 RowRange active_rows(double y0, double y1, int height);
 
@@ -33,25 +34,28 @@ inline int clamp_column(double c, int width) {
 /// An edge in the y bucket sort, with the rows on which it is active and the
 /// wider range of rows whose pixels may lie close enough to it to be flagged.
 struct TableEdge {
-  ProjectedEdge edge;
+  /// The edge in its polygon's ProjectedPolygon::edges (which outlive the
+  /// table); not copied, so that the table stays small.
+  const ProjectedEdge* edge;
   RowRange scan;
   RowRange near;
-  double near_margin =
-      0;           ///< half-width (pixels) of the strip round the edge examined for uncertainty
-  double hyp = 0;  ///< |(m.x, m.y)|
-  double rounding = 0;  ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
-  bool shadow = false;  ///< the edge of a shadow polygon
+  double near_margin;  ///< half-width (pixels) of the strip round the edge examined for uncertainty
+  double hyp;          ///< |(m.x, m.y)|
+  double rounding;     ///< 1e-12·m_scale, the rounding term of m·d per unit |d|
+  bool shadow;         ///< the edge of a shadow polygon
   /// The strip's pixels on a row with centre height y are those with centre
   /// x in [strip_x0 + y·strip_slope ∓ strip_half_width] ∩ [strip_x_lo,
   /// strip_x_hi]: a line and a box, so a row's range costs no division.
-  double strip_x0 = 0, strip_slope = 0, strip_half_width = 0, strip_x_lo = 0, strip_x_hi = 0;
+  double strip_x0, strip_slope, strip_half_width, strip_x_lo, strip_x_hi;
 };
 
 /// Everything the bands share, read-only once built.
 struct Scene {
   CameraSpace camera;
   std::vector<ProjectedPolygon> polygons;
-  std::vector<TableEdge> edges;
+  /// Filled in parallel by prepare; left uninitialized until then (a
+  /// trivial type, so no serial zeroing of 100k+ entries first).
+  UninitializedVector<TableEdge> edges;
   std::vector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
   std::vector<std::size_t>
       scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
