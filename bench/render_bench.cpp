@@ -7,7 +7,8 @@
 // scene JSON, so that `umbra render` and `umbra validate` can be run on it.
 //
 // Counters per run: shadow polygons, exact fallbacks, samples/s (pixels x
-// lights per second). The ratio shadowed/plain is computed by
+// lights per second), spans/s, (shadow polygon, band) pairs skipped, and the
+// seconds of each phase of the last run. The ratio shadowed/plain is computed by
 // scripts/bench_table.py from the JSON output.
 #include <benchmark/benchmark.h>
 #include <fuzz/scene_export.h>
@@ -42,6 +43,9 @@ void render_frame(benchmark::State& state, const geometry::Scene& scene, bool sh
   state.counters["exact_fallbacks"] = static_cast<double>(stats.exact_fallback_pixels);
   state.counters["samples_per_s"] =
       benchmark::Counter(samples, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["spans_per_s"] = benchmark::Counter(static_cast<double>(stats.spans),
+                                                     benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["shadow_bands_skipped"] = static_cast<double>(stats.shadow_bands_skipped);
   state.counters["s_volumes"] = stats.seconds_volumes;
   state.counters["s_raster"] = stats.seconds_raster;
   state.counters["s_decide"] = stats.seconds_decide;
