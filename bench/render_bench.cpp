@@ -48,6 +48,7 @@ void render_frame(benchmark::State& state, const geometry::Scene& scene, bool sh
   state.counters["shadow_bands_skipped"] = static_cast<double>(stats.shadow_bands_skipped);
   state.counters["s_volumes"] = stats.seconds_volumes;
   state.counters["s_raster"] = stats.seconds_raster;
+  state.counters["s_raster_prepare"] = stats.seconds_raster_prepare;
   state.counters["s_decide"] = stats.seconds_decide;
 }
 

@@ -18,10 +18,10 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["models"] = run.models;
   j["seconds"] = {
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
-      {"raster", stats.seconds_raster}, {"maps", stats.seconds_maps},
-      {"decide", stats.seconds_decide}, {"bvh", stats.seconds_bvh},
-      {"render", timings.render},       {"write", timings.write},
-      {"total", timings.total},
+      {"raster", stats.seconds_raster}, {"raster_prepare", stats.seconds_raster_prepare},
+      {"maps", stats.seconds_maps},     {"decide", stats.seconds_decide},
+      {"bvh", stats.seconds_bvh},       {"render", timings.render},
+      {"write", timings.write},         {"total", timings.total},
   };
   j["counts"] = {
       {"pixels", stats.pixels},

@@ -112,6 +112,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       scanline_render(camera, table.polygons, 0, options.threads, {}, &progress);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
+  stats.seconds_raster_prepare = scan.seconds_prepare;
 
   std::vector<VisibleSample> visible(pixels);
   std::vector<Decided> decided(pixels * lights, Decided::lit);

@@ -66,6 +66,9 @@ struct RenderOptions {
 struct RenderStats {
   double seconds_volumes = 0;
   double seconds_raster = 0;
+  /// Part of seconds_raster: projecting the polygons and building the edge
+  /// table, before any row is scanned.
+  double seconds_raster_prepare = 0;
   double seconds_decide = 0;
   std::uint64_t contour_edges = 0;
   std::uint64_t shadow_polygons = 0;

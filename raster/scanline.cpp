@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -41,10 +42,13 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
   threads = resolve_threads(threads);
+  const auto start = std::chrono::steady_clock::now();
   detail::Scene scene = detail::prepare(frame, polygons, lights, group_start, threads);
   if (!skip_hidden_shadows) std::fill(scene.cullable.begin(), scene.cullable.end(), 0);
 
   ScanlineResult result;
+  result.seconds_prepare =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.width = frame.width;
   result.height = frame.height;
   result.lights = lights;

@@ -52,6 +52,7 @@ struct ScanlineResult {
   /// lies clearly behind every visible point round its part in the band
   /// (Bergeron's saving, Band::behind_band in scanline_shadows.cpp).
   std::uint64_t shadow_bands_skipped = 0;
+  double seconds_prepare = 0;  ///< projecting the polygons, building the edge table
 };
 
 /// `group_start` holds every group's flag at the eye (0 or 1); polygons may

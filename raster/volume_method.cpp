@@ -93,6 +93,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   stats.seconds_raster = seconds_since(start);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
+  stats.seconds_raster_prepare = scan.seconds_prepare;
   stats.shadow_bands_skipped = scan.shadow_bands_skipped;
 
   start = Clock::now();
