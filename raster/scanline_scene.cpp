@@ -50,16 +50,26 @@ TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double r
   // can pass the distance test of flag_near_edges: 1e-6 px, the largest
   // value of the rounding term 1e-12·m_scale·|d| in pixels, and the
   // endpoints' own errors. The strip's bounds are computed in floating
-  // point too (row ± margin, the segment cut at those heights): a
-  // thousandth of a pixel, plus a term that grows with the coordinates
-  // for edges whose clipped endpoints lie far off screen, covers that
-  // rounding with a wide margin. The strip is kept this narrow on
-  // purpose: with many lights tens of thousands of shadow edges cross
-  // every row, and each pixel in a strip costs a distance test.
+  // point too: its rows from y ± margin, its columns on a row from the line
+  // x0 + y·slope (below). x0 = xa − ya·slope and the evaluation each round
+  // by a few ulps of |xa| + (|ya| + |y|)·|slope|, the slope's own rounding
+  // moves the line by a few ulps of |slope|·|y − ya| on row y: all well
+  // inside 1e-14·(|xa| + |xb| + width + (|ya| + |yb| + height)·(1 + |slope|)),
+  // plus a thousandth of a pixel. The bound is linear in the coordinates so
+  // that an edge clipped at the near plane, whose far endpoint projects to
+  // 1e11 pixels, still gets a strip a few hundredths of a pixel wide. The
+  // strip is kept this narrow on purpose: with many lights tens of thousands
+  // of shadow edges cross every row, and each pixel in a strip costs a
+  // distance test. A segment less than a pixel tall has no slope here: it is
+  // taken whole along its x extent (dividing by its height would magnify
+  // rounding).
+  const bool tall = std::abs(e.yb - e.ya) >= 1;
+  const double slope = tall ? (e.xb - e.xa) / (e.yb - e.ya) : 0.0;
   const double hyp = std::hypot(e.m.x, e.m.y);
   const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
-  const double coordinate_rounding = 1e-14 * (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) *
-                                     (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1);
+  const double coordinate_rounding =
+      1e-14 * (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1 +
+               (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) * (1 + std::abs(slope)));
   t.near_margin = 1e-3 + coordinate_rounding + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
   if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
   t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin, std::max(e.ya, e.yb) + t.near_margin,
@@ -74,16 +84,13 @@ TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double r
   // part at heights within `margin` of the row, where margin also holds the
   // widening flag_near_edges applies on rows through an endpoint. Such a
   // centre lies within margin·(1 + |dx/dy|) of the segment's line along the
-  // row, and within margin of the segment's x extent. The line is evaluated
-  // as x0 + y·slope; its rounding, at most a few ulps of |ya|·|slope| ≤
-  // |ya|·(|xa| + |xb|) for a segment at least a pixel tall, is in
-  // coordinate_rounding. A segment less than a pixel tall is taken whole
-  // along its x extent: dividing by its height would magnify rounding.
+  // row, and within margin of the segment's x extent; the line's rounding
+  // is in coordinate_rounding.
   const double margin = t.near_margin + std::max(e.err_a, e.err_b);
   t.strip_x_lo = std::min(e.xa, e.xb) - margin;
   t.strip_x_hi = std::max(e.xa, e.xb) + margin;
-  if (std::abs(e.yb - e.ya) >= 1) {
-    t.strip_slope = (e.xb - e.xa) / (e.yb - e.ya);
+  if (tall) {
+    t.strip_slope = slope;
     t.strip_x0 = e.xa - e.ya * t.strip_slope;
     t.strip_half_width = margin * (1 + std::abs(t.strip_slope));
   } else {
