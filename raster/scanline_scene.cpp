@@ -170,16 +170,19 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
       const ProjectedPolygon& polygon = scene.polygons[k];
       const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
       // Band::behind_band widens a polygon's box by a pixel, which must hold
-      // its edges' strips and the rounding of its clipped coordinates:
-      // polygons with wider strips or far-off coordinates are always scanned.
+      // its edges' strips and the rounding of its clip at the band's rows, a
+      // few ulps of |xa| + |xb| (1e-3 px at 1e12): polygons with wider strips
+      // or farther-off coordinates are always scanned. Clipped shadow
+      // polygons reach 1e11 pixels and cover much of the image: they must
+      // not be left out.
       bool cullable = shadow && polygon.status == ProjectedPolygon::Status::active;
       for (std::size_t n = 0; n < polygon.edges.size(); ++n) {
         const ProjectedEdge& e = polygon.edges[n];
         TableEdge& t = scene.edges[first_edge[k] + n];
         t = table_edge(e, camera, ray_slant);
         t.shadow = shadow;
-        cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e9 &&
-                   std::abs(e.ya) < 1e9 && std::abs(e.xb) < 1e9 && std::abs(e.yb) < 1e9;
+        cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e12 &&
+                   std::abs(e.ya) < 1e12 && std::abs(e.xb) < 1e12 && std::abs(e.yb) < 1e12;
       }
       scene.cullable[k] = cullable;
     }

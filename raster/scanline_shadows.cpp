@@ -225,8 +225,9 @@ bool Band::behind_band(const ProjectedPolygon& polygon) const {
   if (!(x_lo <= x_hi)) return true;  // no part in the band's rows
   x_lo -= 1;
   x_hi += 1;
-  const int i0 = std::max(0, static_cast<int>(std::ceil(x_lo - 0.5)));
-  const int i1 = std::min(frame.width - 1, static_cast<int>(std::floor(x_hi - 0.5)));
+  // Clamped before any conversion: a clipped polygon's box reaches 1e11.
+  const int i0 = clamp_column(std::ceil(x_lo - 0.5), frame.width);
+  const int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, frame.width) - 1;
   if (i0 > i1) return true;  // no pixel centre in the box
   const double visible = band_depth_bound(i0, i1);
   if (visible == -kInfinity) return true;  // nothing seen: no count to change

@@ -63,6 +63,8 @@ TEST(ScanlineSkip, SkippingHiddenShadowPolygonsChangesNothing) {
                            "scenes/eye_on_volume.json", "scenes/bergeron/fig08_twisted_quad.json",
                            "scenes/bergeron/fig11_twisted_in_polyhedron.json",
                            "scenes/bergeron/fig14_eye_in_overlapping_shadows.json",
+                           "scenes/bergeron/fig14_eye_inside_open_box.json",
+                           "scenes/bergeron/fig14_eye_under_open_quad.json",
                            "scenes/bergeron/fig15_sphere_of_influence.json"}) {
     const ScanlineInput in = scanline_input(geometry::load_scene(data / name));
     const ScanlineResult all =
