@@ -223,9 +223,11 @@ bool Band::behind_band(const ProjectedPolygon& polygon) const {
     x_hi = std::max({x_hi, xa, xb});
   }
   if (!(x_lo <= x_hi)) return true;  // no part in the band's rows
-  x_lo -= 1;
-  x_hi += 1;
-  // Clamped before any conversion: a clipped polygon's box reaches 1e11.
+  // Only pixel centres matter, and they lie in [0.5, width - 0.5]: the box
+  // is cut to the image (a clipped polygon's part reaches 1e11 pixels, a box
+  // over which its plane's n·d would change sign), before any conversion.
+  x_lo = std::max(x_lo - 1, 0.0);
+  x_hi = std::min(x_hi + 1, static_cast<double>(frame.width));
   const int i0 = clamp_column(std::ceil(x_lo - 0.5), frame.width);
   const int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, frame.width) - 1;
   if (i0 > i1) return true;  // no pixel centre in the box
