@@ -1,4 +1,5 @@
 #include <geometry/contour.h>
+#include <geometry/edge_table.h>
 #include <geometry/parallel_for.h>
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
@@ -100,12 +101,15 @@ class ModelVolume {
   VolumeStats& stats_;
 };
 
-/// Everything the lights share, computed once before they are built.
+/// Everything the lights share, computed once before they are built: what
+/// depends on a model alone (its surfaces, its edges matched by position)
+/// is asked for every light.
 struct SceneShare {
   const Scene& scene;
   Box bounds;
-  /// Per model (empty where it casts no shadows): the same for every light.
+  /// Per model; empty where it casts no shadows.
   std::vector<std::vector<PolygonSurface>> surfaces;
+  std::vector<EdgeTable> edges;
 };
 
 /// Light li's volumes, for every shadow-casting model in model order; each
@@ -134,7 +138,7 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
     for (std::uint32_t p = 0; p < roles.size(); ++p)
       if (roles[p].facing != 0) casting.push_back(p);
     if (casting.empty()) continue;
-    const std::vector<ContourEdge> contour = contour_edges(model, roles);
+    const std::vector<ContourEdge> contour = contour_edges(share.edges[mi], roles);
 
     double distance = 0;
     if (light.type == LightType::point) {
@@ -198,10 +202,14 @@ void append_light_volume(LightVolume light, ShadowVolumes& volumes) {
 }  // namespace
 
 ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options) {
-  SceneShare share{scene, scene_bounds(scene), {}};
+  SceneShare share{scene, scene_bounds(scene), {}, {}};
   share.surfaces.resize(scene.models.size());
-  for (std::size_t mi = 0; mi < scene.models.size(); ++mi)
-    if (scene.models[mi].casts_shadows) share.surfaces[mi] = model_surfaces(scene.models[mi]);
+  share.edges.resize(scene.models.size());
+  parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
+    if (!scene.models[mi].casts_shadows) return;
+    share.surfaces[mi] = model_surfaces(scene.models[mi]);
+    share.edges[mi] = edge_table(scene.models[mi]);
+  });
 
   // The lights are independent: each builds its own part on some thread;
   // the parts are then put together in light order, as one pass would.
