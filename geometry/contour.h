@@ -13,7 +13,8 @@
 // polygons facing alike, and the right sum on non-manifold edges.
 //
 // Edges are matched by vertex position (bit-identical coordinates), so a
-// mesh with duplicated vertices still finds its shared edges.
+// mesh with duplicated vertices still finds its shared edges (edge_table.h).
+#include <geometry/edge_table.h>
 #include <geometry/exact_predicates.h>
 #include <geometry/polygon_surface.h>
 #include <geometry/scene.h>
@@ -64,6 +65,10 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
 /// Edges of nonzero weight, in the order their first polygon lists them;
 /// polygons with facing 0 and twisted polygons add no weight.
 std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles);
+/// The same with the model's edge table (edge_table(model)) already at hand,
+/// as when one model is asked about many lights.
+std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
+                                       const std::vector<PolygonRole>& roles);
 /// contour_edges(model, polygon_roles(model, light)).
 std::vector<ContourEdge> contour_edges(const Model& model, const HPoint& light);
 

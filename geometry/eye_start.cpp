@@ -1,4 +1,5 @@
 #include <geometry/eye_start.h>
+#include <geometry/parallel_for.h>
 #include <geometry/shadow_oracle.h>
 
 #include <map>
@@ -6,7 +7,7 @@
 
 namespace umbra::geometry {
 
-EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes) {
+EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsigned threads) {
   const Scene& scene = index.scene();
   const std::size_t lights = scene.lights.size();
   EyeStart start;
@@ -20,11 +21,14 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes) {
     group_of[{t.light, t.model, t.polygon}] = g;
   }
 
-  for (std::uint32_t l = 0; l < lights; ++l) {
+  // One exact query per light, independent of the others: each light writes
+  // only its own count, flag and groups (a group belongs to one light).
+  parallel_for(lights, threads, [&](std::size_t li) {
+    const auto l = static_cast<std::uint32_t>(li);
     const auto odd = shadowing_polygons(index, scene.camera.eye, l);
     if (!odd) {
       start.degenerate[l] = 1;
-      continue;
+      return;
     }
     for (std::uint32_t pi : *odd) {
       const IndexedPolygon& p = index.polygons()[pi];
@@ -35,7 +39,7 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes) {
       if (const auto it = group_of.find({l, p.model, p.polygon}); it != group_of.end())
         start.in_shadow[it->second] = 1;
     }
-  }
+  });
   return start;
 }
 

@@ -27,6 +27,8 @@ struct EyeStart {
   std::vector<std::uint8_t> degenerate;
 };
 
-EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes);
+/// `threads` asks the lights in parallel (0: every hardware thread); the
+/// answer does not depend on it.
+EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsigned threads = 0);
 
 }  // namespace umbra::geometry

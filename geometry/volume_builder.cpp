@@ -1,4 +1,6 @@
 #include <geometry/contour.h>
+#include <geometry/edge_table.h>
+#include <geometry/parallel_for.h>
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
 #include <geometry/volume_reach.h>
@@ -23,18 +25,27 @@ std::uint64_t polygon_bytes(std::size_t vertices) {
   return sizeof(ShadowPolygon) + vertices * sizeof(Vec3);
 }
 
+/// One light's share of the volumes, built on its own thread. Groups are
+/// numbered from 0 within the light; build_shadow_volumes renumbers them.
+struct LightVolume {
+  std::vector<ShadowPolygon> polygons;
+  std::vector<TwistedPolygon> twisted;
+  std::vector<double> extrusion;  ///< per model
+  VolumeStats stats;
+};
+
 /// Emits one model's volume for one light.
 class ModelVolume {
  public:
   ModelVolume(const Model& model, const Light& light, std::uint32_t light_index,
-              std::uint32_t model_index, double k, ShadowVolumes& out, VolumeStats& stats)
+              std::uint32_t model_index, double k, LightVolume& out)
       : model_(model),
         light_(light),
         light_index_(light_index),
         model_index_(model_index),
         k_(k),
         out_(out),
-        stats_(stats) {}
+        stats_(out.stats) {}
 
   Vec3 extrude(const Vec3& x) const {
     return light_.type == LightType::point ? x + k_ * (x - light_.position)
@@ -86,86 +97,132 @@ class ModelVolume {
   const Light& light_;
   std::uint32_t light_index_, model_index_;
   double k_;
-  ShadowVolumes& out_;
+  LightVolume& out_;
   VolumeStats& stats_;
 };
+
+/// Everything the lights share, computed once before they are built: what
+/// depends on a model alone (its surfaces, its edges matched by position)
+/// is asked for every light.
+struct SceneShare {
+  const Scene& scene;
+  Box bounds;
+  /// Per model; empty where it casts no shadows.
+  std::vector<std::vector<PolygonSurface>> surfaces;
+  std::vector<EdgeTable> edges;
+};
+
+/// Light li's volumes, for every shadow-casting model in model order; each
+/// twisted polygon's group is its index in the result's `twisted`.
+LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
+                               const VolumeOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scene& scene = share.scene;
+  const Light& light = scene.lights[li];
+  const HPoint lp = light_point(light);
+  const LightReach reach = light_reach(scene, share.bounds, light);
+  LightVolume out;
+  VolumeStats& stats = out.stats;
+  stats.light = li;
+  out.extrusion.assign(scene.models.size(), 0.0);
+
+  for (std::uint32_t mi = 0; mi < scene.models.size(); ++mi) {
+    const Model& model = scene.models[mi];
+    if (!model.casts_shadows) continue;
+    for (const Polygon& p : model.polygons) {
+      stats.crow_all_edges_polygons += p.size();
+      stats.crow_bytes += p.size() * polygon_bytes(4);
+    }
+    const std::vector<PolygonRole> roles = polygon_roles(model, share.surfaces[mi], lp);
+    std::vector<std::uint32_t> casting;
+    for (std::uint32_t p = 0; p < roles.size(); ++p)
+      if (roles[p].facing != 0) casting.push_back(p);
+    if (casting.empty()) continue;
+    const std::vector<ContourEdge> contour = contour_edges(share.edges[mi], roles);
+
+    double distance = 0;
+    if (light.type == LightType::point) {
+      distance = distance_lower_bound(model, share.surfaces[mi], casting, light.position);
+      if (light.light_end && distance > *light.light_end) {
+        // Wholly outside the sphere: everything it could shadow is out of range.
+        ++stats.culled_models;
+        stats.culled_polygons += contour.size() + (options.caps ? 2 * casting.size() : 0);
+        continue;
+      }
+    }
+    const double k = extrusion_factor(light, reach, distance);
+    if (reach.limited) ++stats.truncated_models;
+    out.extrusion[mi] = k;
+    ModelVolume volume(model, light, li, mi, k, out);
+
+    for (const ContourEdge& e : contour) {
+      volume.side(e.from, e.to, e.polygon, e.edge, e.weight, -1);
+      ++stats.contour_edges;
+      if (e.weight == 1)
+        ++stats.boundary_contour_edges;
+      else
+        ++stats.silhouette_contour_edges;
+    }
+    for (std::uint32_t p : casting) {
+      std::int32_t group = -1;
+      if (roles[p].twisted) {
+        group = static_cast<std::int32_t>(out.twisted.size());
+        out.twisted.push_back({li, mi, p});
+        ++stats.twisted_polygons;
+        // Its own volume: a side on every edge of nonzero length, in the
+        // polygon's order; parity makes the sign irrelevant.
+        const Polygon& polygon = model.polygons[p];
+        for (std::uint32_t e = 0; e < polygon.size(); ++e) {
+          const std::uint32_t a = polygon[e], b = polygon[(e + 1) % polygon.size()];
+          if (model.vertices[a] != model.vertices[b]) volume.side(a, b, p, e, 1, group);
+        }
+      }
+      if (options.caps) volume.caps(p, roles[p].facing, group);
+    }
+  }
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+/// Appends one light's volumes after those of the lights before it. Its
+/// groups are shifted by the twisted polygons already there, which gives
+/// every group the index a single pass over the lights in order would have.
+/// Taken by value: the part's emptied buffers go as soon as it is appended.
+void append_light_volume(LightVolume light, ShadowVolumes& volumes) {
+  const auto offset = static_cast<std::int32_t>(volumes.twisted.size());
+  for (ShadowPolygon& p : light.polygons) {
+    if (p.group >= 0) p.group += offset;
+    volumes.polygons.push_back(std::move(p));
+  }
+  volumes.twisted.insert(volumes.twisted.end(), light.twisted.begin(), light.twisted.end());
+  volumes.extrusion.push_back(std::move(light.extrusion));
+  volumes.stats.push_back(light.stats);
+}
 
 }  // namespace
 
 ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options) {
+  SceneShare share{scene, scene_bounds(scene), {}, {}};
+  share.surfaces.resize(scene.models.size());
+  share.edges.resize(scene.models.size());
+  parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
+    if (!scene.models[mi].casts_shadows) return;
+    share.surfaces[mi] = model_surfaces(scene.models[mi]);
+    share.edges[mi] = edge_table(scene.models[mi]);
+  });
+
+  // The lights are independent: each builds its own part on some thread;
+  // the parts are then put together in light order, as one pass would.
+  std::vector<LightVolume> parts(scene.lights.size());
+  parallel_for(parts.size(), options.threads, [&](std::size_t li) {
+    parts[li] = build_light_volume(share, static_cast<std::uint32_t>(li), options);
+  });
+
   ShadowVolumes volumes;
-  const Box bounds = scene_bounds(scene);
-  // Surfaces are the same for every light: computed once per model.
-  std::vector<std::vector<PolygonSurface>> surfaces(scene.models.size());
-  for (std::size_t mi = 0; mi < scene.models.size(); ++mi)
-    if (scene.models[mi].casts_shadows) surfaces[mi] = model_surfaces(scene.models[mi]);
-
-  for (std::uint32_t li = 0; li < scene.lights.size(); ++li) {
-    const auto start = std::chrono::steady_clock::now();
-    const Light& light = scene.lights[li];
-    const HPoint lp = light_point(light);
-    const LightReach reach = light_reach(scene, bounds, light);
-    VolumeStats stats;
-    stats.light = li;
-    volumes.extrusion.emplace_back(scene.models.size(), 0.0);
-
-    for (std::uint32_t mi = 0; mi < scene.models.size(); ++mi) {
-      const Model& model = scene.models[mi];
-      if (!model.casts_shadows) continue;
-      for (const Polygon& p : model.polygons) {
-        stats.crow_all_edges_polygons += p.size();
-        stats.crow_bytes += p.size() * polygon_bytes(4);
-      }
-      const std::vector<PolygonRole> roles = polygon_roles(model, surfaces[mi], lp);
-      std::vector<std::uint32_t> casting;
-      for (std::uint32_t p = 0; p < roles.size(); ++p)
-        if (roles[p].facing != 0) casting.push_back(p);
-      if (casting.empty()) continue;
-      const std::vector<ContourEdge> contour = contour_edges(model, roles);
-
-      double distance = 0;
-      if (light.type == LightType::point) {
-        distance = distance_lower_bound(model, surfaces[mi], casting, light.position);
-        if (light.light_end && distance > *light.light_end) {
-          // Wholly outside the sphere: everything it could shadow is out of range.
-          ++stats.culled_models;
-          stats.culled_polygons += contour.size() + (options.caps ? 2 * casting.size() : 0);
-          continue;
-        }
-      }
-      const double k = extrusion_factor(light, reach, distance);
-      if (reach.limited) ++stats.truncated_models;
-      volumes.extrusion[li][mi] = k;
-      ModelVolume volume(model, light, li, mi, k, volumes, stats);
-
-      for (const ContourEdge& e : contour) {
-        volume.side(e.from, e.to, e.polygon, e.edge, e.weight, -1);
-        ++stats.contour_edges;
-        if (e.weight == 1)
-          ++stats.boundary_contour_edges;
-        else
-          ++stats.silhouette_contour_edges;
-      }
-      for (std::uint32_t p : casting) {
-        std::int32_t group = -1;
-        if (roles[p].twisted) {
-          group = static_cast<std::int32_t>(volumes.twisted.size());
-          volumes.twisted.push_back({li, mi, p});
-          ++stats.twisted_polygons;
-          // Its own volume: a side on every edge of nonzero length, in the
-          // polygon's order; parity makes the sign irrelevant.
-          const Polygon& polygon = model.polygons[p];
-          for (std::uint32_t e = 0; e < polygon.size(); ++e) {
-            const std::uint32_t a = polygon[e], b = polygon[(e + 1) % polygon.size()];
-            if (model.vertices[a] != model.vertices[b]) volume.side(a, b, p, e, 1, group);
-          }
-        }
-        if (options.caps) volume.caps(p, roles[p].facing, group);
-      }
-    }
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    volumes.stats.push_back(stats);
-  }
+  std::size_t polygons = 0;
+  for (const LightVolume& part : parts) polygons += part.polygons.size();
+  volumes.polygons.reserve(polygons);
+  for (LightVolume& part : parts) append_light_volume(std::move(part), volumes);
   return volumes;
 }
 

@@ -13,6 +13,9 @@ struct VolumeOptions {
   /// renderer does without them: an eye ray to its first hit never crosses
   /// a type 1 cap, and never reaches a type 3 cap (volume_reach.h).
   bool caps = true;
+  /// Threads building the lights' volumes, one light at a time each; 0 means
+  /// every hardware thread. The result does not depend on it.
+  unsigned threads = 0;
 };
 
 /// For every light and every shadow-casting model:
@@ -24,6 +27,8 @@ struct VolumeOptions {
 /// extruded by the model's factor k (volume_reach.h): past the scene for
 /// unlimited lights, to just beyond the sphere of influence for lights with
 /// light_end, where models wholly outside the sphere get no volume at all.
+/// Polygons come light by light, in light order, then model by model; groups
+/// are numbered in that order. Only stats[i].seconds varies between runs.
 ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options = {});
 
 }  // namespace umbra::geometry

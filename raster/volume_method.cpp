@@ -66,11 +66,12 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   // No caps: an eye ray to its first hit crosses none (volume_builder.h).
   // Without shadows: no volume at all, every count starts and stays at 0.
   const geometry::ShadowVolumes volumes =
-      options.shadows ? geometry::build_shadow_volumes(scene, {.caps = false})
-                      : geometry::ShadowVolumes{};
+      options.shadows
+          ? geometry::build_shadow_volumes(scene, {.caps = false, .threads = options.threads})
+          : geometry::ShadowVolumes{};
   geometry::EyeStart eye;
   if (options.shadows) {
-    eye = geometry::eye_start(index, volumes);
+    eye = geometry::eye_start(index, volumes, options.threads);
   } else {
     eye.count.assign(lights, 0);
     eye.degenerate.assign(lights, 0);
