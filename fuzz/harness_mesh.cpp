@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   light.direction = {-1, -2, -0.5};
   scene.lights.push_back(light);
   scene.camera.eye = {0, 0, 3 * magnitude + 3};
-  const auto volumes = geometry::build_shadow_volumes(scene);
+  const auto volumes = geometry::build_shadow_volumes(scene, {.caps = true, .threads = 1});
   const fuzz::ClosureReport closure = fuzz::check_closure(volumes);
   UMBRA_FUZZ_CHECK(kName, closure.closed(), closure.summary());
   return 0;

@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Volumes of small scenes with moderate coordinates (far vertices of huge
   // ones overflow by design of the extrusion, see docs/fuzzing.md).
   if (polygons <= 64 && scene.lights.size() <= 4 && magnitude <= 1e12) {
-    const auto volumes = geometry::build_shadow_volumes(scene);
+    const auto volumes = geometry::build_shadow_volumes(scene, {.caps = true, .threads = 1});
     const fuzz::ClosureReport closure = fuzz::check_closure(volumes);
     UMBRA_FUZZ_CHECK(kName, closure.closed(), closure.summary());
   }

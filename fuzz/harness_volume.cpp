@@ -21,6 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (std::getenv("UMBRA_FUZZ_PRINT")) std::fprintf(stderr, "scene: %s\n", fuzz::scene_to_json(scene).c_str());
   geometry::VolumeOptions options;
   options.caps = true;
+  options.threads = 1;  // libFuzzer runs many small inputs: no thread per light
   const auto volumes = geometry::build_shadow_volumes(scene, options);
   const fuzz::ClosureReport closure = fuzz::check_closure(volumes);
   UMBRA_FUZZ_CHECK("volume", closure.closed(),
