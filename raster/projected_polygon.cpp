@@ -76,15 +76,6 @@ double ProjectedPolygon::depth_error(const Vec3& d_cam, double t) const {
   return depth_error_at(d_cam, length(t * d_cam - p0));
 }
 
-double ProjectedPolygon::depth_error_at(const Vec3& d_cam, double offset) const {
-  return depth_error_of(offset, std::abs(dot(n, d_cam)));
-}
-
-double ProjectedPolygon::depth_error_of(double offset, double denominator) const {
-  if (!(denominator > 0) || !std::isfinite(offset)) return std::numeric_limits<double>::infinity();
-  return 1e-12 * vertex_count * (mag + offset) * (n_length + size * offset) / denominator;
-}
-
 ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t index,
                                  const CameraSpace& camera) {
   const geometry::CameraFrame& frame = camera.frame;

@@ -12,7 +12,9 @@
 #include <geometry/sample_ray.h>
 #include <raster/scanline.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace umbra::raster::detail {
@@ -104,11 +106,18 @@ struct ProjectedPolygon {
   /// The same bound with `offset` in place of |t·d − p0|; it grows with
   /// `offset`, so any offset at least that distance gives a bound at least
   /// depth_error's (infinite when offset is not finite).
-  double depth_error_at(const Vec3& d_cam, double offset) const;
+  /// (Inline, as depth_error_of: the shadow pass calls it per pixel.)
+  double depth_error_at(const Vec3& d_cam, double offset) const {
+    return depth_error_of(offset, std::abs(dot(n, d_cam)));
+  }
   /// The same bound from `offset` and |n·d_cam| (`denominator`): it grows
   /// with the first and falls with the second, so extreme values over a set
   /// of rays bound it over the set.
-  double depth_error_of(double offset, double denominator) const;
+  double depth_error_of(double offset, double denominator) const {
+    if (!(denominator > 0) || !std::isfinite(offset))
+      return std::numeric_limits<double>::infinity();
+    return 1e-12 * vertex_count * (mag + offset) * (n_length + size * offset) / denominator;
+  }
 };
 
 /// Prepares polygons[index]. Throws std::invalid_argument on non-finite vertices.

@@ -1,6 +1,5 @@
 // Band::run, the order of a worker's rows: each band of rows goes through
-// the surface pass, then the shadow pass; the active lists and the edge
-// crossings they are built from.
+// the surface pass, then the shadow pass; and the active lists they walk.
 #include <raster/scanline_band.h>
 
 #include <algorithm>
@@ -80,21 +79,6 @@ Band::NearStrip Band::make_strip(std::size_t k) const {
   const TableEdge& t = scene_.edges[e];
   return {t.strip_x0, t.strip_slope,   t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
           e,          t.edge->polygon, t.near.first,       t.near.last,  t.shadow};
-}
-
-/// Pixel x at which edge e crosses row j's centre line, from the edge's
-/// homogeneous line (well conditioned even when an endpoint was clipped far
-/// off screen); endpoint interpolation only for a line with m.x = 0.
-double Band::crossing_x(const Vec3& m, std::uint32_t edge, int j) const {
-  const double sy = scene_.camera.row_screen_y(j);
-  const double sx = -(m.y * sy + m.z) / m.x;
-  double x = scene_.camera.pixel_x(sx);
-  if (!std::isfinite(x)) {
-    const ProjectedEdge& e = *scene_.edges[edge].edge;
-    const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
-    x = e.xa + lambda * (e.xb - e.xa);
-  }
-  return x;
 }
 
 }  // namespace umbra::raster::detail

@@ -106,7 +106,17 @@ class Band {
   /// Pixel x at which edge e crosses row j's centre line, from the edge's
   /// homogeneous line (well conditioned even when an endpoint was clipped far
   /// off screen); endpoint interpolation only for a line with m.x = 0.
-  double crossing_x(const Vec3& m, std::uint32_t edge, int j) const;
+  double crossing_x(const Vec3& m, std::uint32_t edge, int j) const {
+    const double sy = scene_.camera.row_screen_y(j);
+    const double sx = -(m.y * sy + m.z) / m.x;
+    double x = scene_.camera.pixel_x(sx);
+    if (!std::isfinite(x)) {
+      const ProjectedEdge& e = *scene_.edges[edge].edge;
+      const double lambda = (j + 0.5 - e.ya) / (e.yb - e.ya);
+      x = e.xa + lambda * (e.xb - e.xa);
+    }
+    return x;
+  }
 
   /// Row j's surfaces: visible polygon, depth and their uncertainty;
   /// crossings_[0, carried) were active on the row before. The shadow
