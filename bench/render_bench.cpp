@@ -6,9 +6,10 @@
 // With UMBRA_BENCH_DUMP=DIR every benchmark scene is also written there as
 // scene JSON, so that `umbra render` and `umbra validate` can be run on it.
 //
-// Counters per run: shadow polygons, exact fallbacks, samples/s (pixels x
-// lights per second), spans/s, (shadow polygon, band) pairs skipped, and the
-// seconds of each phase of the last run. The ratio shadowed/plain is computed by
+// Passes: "shadows" (exact volumes), "plain" (the same without shadows) and
+// "map" (Williams' shadow maps, default settings). Counters per run: shadow polygons, exact
+// fallbacks, samples/s (pixels x lights per second), spans/s, (shadow polygon, band) pairs skipped,
+// and the seconds of each phase of the last run. The ratio shadowed/plain is computed by
 // scripts/bench_table.py from the JSON output.
 #include <benchmark/benchmark.h>
 #include <fuzz/scene_export.h>
@@ -29,18 +30,24 @@
 namespace umbra::bench {
 namespace {
 
-void render_frame(benchmark::State& state, const geometry::Scene& scene, bool shadows,
-                  bool warm_up = false) {
+/// The passes compared: exact shadow volumes, the same pass without
+/// shadows, and Williams' shadow maps at their default settings (the method
+/// whose cost Williams puts at "roughly twice" a plain render).
+raster::RenderOptions pass_options(const std::string& pass) {
+  if (pass == "map") return {.method = raster::Method::map, .threads = 0};
+  return {.method = raster::Method::volume, .threads = 0, .shadows = pass == "shadows"};
+}
+
+void render_frame(benchmark::State& state, const geometry::Scene& scene,
+                  const raster::RenderOptions& options, bool warm_up = false) {
   raster::RenderStats stats;
   // One untimed render first: otherwise whichever pass runs first pays the
   // page faults of fresh memory (up to 2x on this VM), and the shadowed pass
   // always ran first. (Google Benchmark's own warm-up excludes fixed
   // iteration counts.)
-  if (warm_up)
-    raster::render(scene, {.method = raster::Method::volume, .threads = 0, .shadows = shadows});
+  if (warm_up) raster::render(scene, options);
   for (auto _ : state) {
-    raster::Frame frame = raster::render(
-        scene, {.method = raster::Method::volume, .threads = 0, .shadows = shadows}, &stats);
+    raster::Frame frame = raster::render(scene, options, &stats);
     benchmark::DoNotOptimize(frame.beauty.data());
   }
   const double samples =
@@ -110,27 +117,25 @@ void dump_scenes() {
 
 void register_benchmarks() {
   const std::string torus = std::string(UMBRA_DATA_DIR) + "/meshes/torus.off";
-  for (const bool shadows : {true, false}) {
+  for (const std::string pass : {"shadows", "plain", "map"}) {
     const geometry::Scene smoke = mesh_on_floor(torus, 2, 160, 90);
     benchmark::RegisterBenchmark(
-        (std::string("Smoke/torus/lights:2/") + (shadows ? "shadows" : "plain")).c_str(),
-        [smoke, shadows](benchmark::State& s) { render_frame(s, smoke, shadows); })
+        ("Smoke/torus/lights:2/" + pass).c_str(),
+        [smoke, pass](benchmark::State& s) { render_frame(s, smoke, pass_options(pass)); })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
   }
   for (const std::string& mesh : split(std::getenv("UMBRA_BENCH_MESHES"))) {
     const std::string stem = std::filesystem::path(mesh).stem().string();
     for (const int lights : {1, 4, 16}) {
-      // Load once per (mesh, lights); both passes render the same scene.
+      // Load once per (mesh, lights); every pass renders the same scene.
       const geometry::Scene scene = mesh_on_floor(mesh, lights, 1280, 720);
       scenes().emplace_back(stem + "/lights:" + std::to_string(lights), scene);
-      for (const bool shadows : {true, false}) {
+      for (const std::string pass : {"shadows", "plain", "map"}) {
         benchmark::RegisterBenchmark(
-            ("Render/" + stem + "/lights:" + std::to_string(lights) + "/" +
-             (shadows ? "shadows" : "plain"))
-                .c_str(),
-            [scene, shadows, warmed = false](benchmark::State& s) mutable {
-              render_frame(s, scene, shadows, !warmed);
+            ("Render/" + stem + "/lights:" + std::to_string(lights) + "/" + pass).c_str(),
+            [scene, pass, warmed = false](benchmark::State& s) mutable {
+              render_frame(s, scene, pass_options(pass), !warmed);
               warmed = true;
             })
             ->Unit(benchmark::kMillisecond)

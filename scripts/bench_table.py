@@ -2,8 +2,9 @@
 """Turns Google Benchmark JSON from umbra_render_bench into a Markdown table:
 per mesh and light count, the median frame time with shadows and without,
 their ratio, the shadows' cost per light in plain frames ((ratio - 1) /
-lights), the shadowed frame's phases, samples and spans per second and exact
-fallbacks per frame."""
+lights), Williams' shadow maps (default settings) in the same run and their
+ratio to plain, the shadowed frame's phases, samples and spans per second and
+exact fallbacks per frame."""
 import json
 import sys
 
@@ -16,19 +17,21 @@ def main(path):
             continue
         _, mesh, lights, mode = r["run_name"].split("/")[:4]
         median[(mesh, int(lights.split(":")[1]), mode)] = r
-    print("| mesh | lights | shadows (ms) | plain (ms) | ratio | per light | "
-          "volumes / scanline / decide (ms) | samples/s | spans/s | shadow polygons | "
-          "bands skipped | exact fallbacks |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    print("| mesh | lights | shadows (ms) | plain (ms) | ratio | per light | maps (ms) | "
+          "maps / plain | volumes / scanline / decide (ms) | samples/s | spans/s | "
+          "shadow polygons | bands skipped | exact fallbacks |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for (mesh, lights, mode), r in sorted(median.items()):
         if mode != "shadows":
             continue
         plain = median.get((mesh, lights, "plain"))
         t = r["real_time"]
         tp = plain["real_time"] if plain else float("nan")
+        maps = median.get((mesh, lights, "map"))
+        tm = maps["real_time"] if maps else float("nan")
         phases = " / ".join(f"{r[k] * 1e3:.0f}" for k in ("s_volumes", "s_raster", "s_decide"))
         print(f"| {mesh} | {lights} | {t:.0f} | {tp:.0f} | {t / tp:.2f} | "
-              f"{(t / tp - 1) / lights:.2f} | {phases} | "
+              f"{(t / tp - 1) / lights:.2f} | {tm:.0f} | {tm / tp:.2f} | {phases} | "
               f"{r['samples_per_s'] / 1e6:.1f} M | {r['spans_per_s'] / 1e3:.0f} k | "
               f"{r['shadow_polygons']:.0f} | {r['shadow_bands_skipped']:.0f} | "
               f"{r['exact_fallbacks']:.0f} |")
