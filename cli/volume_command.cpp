@@ -1,5 +1,6 @@
 #include <cli/exit_codes.h>
 #include <cli/output_files.h>
+#include <cli/parse_checks.h>
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
 #include <fmt/format.h>
@@ -47,6 +48,11 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
   cmd->add_option("--stats-json", args.stats_json,
                   "Write counts per light and timings as JSON to FILE ('-' = stdout)")
       ->type_name("FILE");
+  cmd->add_option("--threads", args.threads,
+                  "Worker threads, one light at a time each (0 = all hardware threads); the "
+                  "output does not depend on it")
+      ->check(thread_count())
+      ->type_name("N");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
@@ -77,7 +83,8 @@ int run_volume(const VolumeArgs& args) {
   timings.load = seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();
-  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene);
+  const geometry::ShadowVolumes volumes =
+      geometry::build_shadow_volumes(scene, {.caps = true, .threads = args.threads});
   timings.volumes = seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();

@@ -10,6 +10,7 @@ struct VolumeArgs {
   std::string output;      ///< .ply, .obj or .off (checked before any work)
   std::string stats_json;  ///< empty: none; "-": stdout
   bool quiet = false;
+  unsigned threads = 0;  ///< lights built in parallel; 0 = all hardware threads
 };
 
 /// Adds the `volume` subcommand to `app`, parsing into `args`.

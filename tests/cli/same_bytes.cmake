@@ -1,6 +1,8 @@
 # Renders one scene with several thread counts and requires byte-identical
 # files (EXR with every AOV, and PNG):
 #   cmake -DUMBRA=<exe> -DSCENE=<json> -DWORK_DIR=<dir> -P same_bytes.cmake
+# With -DVERB=volume it exports the scene's shadow volumes instead (PLY and
+# OBJ with its sidecar).
 cmake_minimum_required(VERSION 3.25)
 foreach(var UMBRA SCENE WORK_DIR)
   if(NOT DEFINED ${var})
@@ -9,16 +11,31 @@ foreach(var UMBRA SCENE WORK_DIR)
 endforeach()
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
-foreach(ext exr png)
+if(NOT DEFINED VERB)
+  set(VERB render)
+endif()
+if(VERB STREQUAL "volume")
+  set(exts ply obj)
+else()
+  set(exts exr png)
+endif()
+foreach(ext ${exts})
   set(reference "")
   foreach(threads 1 2 3 7)
-    set(out "${WORK_DIR}/t${threads}.${ext}")
-    execute_process(COMMAND "${UMBRA}" render "${SCENE}" -o "${out}" --threads ${threads} -q
+    # One directory per thread count, the same file name in each: an OBJ
+    # and its sidecar name each other.
+    file(MAKE_DIRECTORY "${WORK_DIR}/t${threads}")
+    set(out "${WORK_DIR}/t${threads}/out.${ext}")
+    execute_process(COMMAND "${UMBRA}" ${VERB} "${SCENE}" -o "${out}" --threads ${threads} -q
       RESULT_VARIABLE code ERROR_VARIABLE err)
     if(NOT code EQUAL 0)
-      message(FATAL_ERROR "render with ${threads} threads exited ${code}: ${err}")
+      message(FATAL_ERROR "${VERB} with ${threads} threads exited ${code}: ${err}")
     endif()
     file(SHA256 "${out}" hash)
+    if(ext STREQUAL "obj")
+      file(SHA256 "${out}.json" sidecar)
+      string(APPEND hash "${sidecar}")
+    endif()
     if(reference STREQUAL "")
       set(reference "${hash}")
     elseif(NOT hash STREQUAL reference)
