@@ -72,9 +72,11 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   const int rows_per_chunk =
       ((frame.height + 8 * workers - 1) / (8 * workers) + kBand - 1) / kBand * kBand;
   const int chunks = (frame.height + rows_per_chunk - 1) / rows_per_chunk;
-  // Each row is computed from the shared read-only scene alone, so neither
-  // the chunks nor which worker takes them can change any value: results are
-  // identical for any thread count.
+  // Each row is computed from the shared read-only scene alone, and chunks
+  // are whole bands (bands start at multiples of kBandRows whatever the
+  // thread count), so neither the chunks nor which worker takes them can
+  // change any value: results, shadow_bands_skipped included, are identical
+  // for any thread count.
   std::vector<std::uint64_t> spans(static_cast<std::size_t>(workers), 0);
   std::vector<std::uint64_t> skipped(static_cast<std::size_t>(workers), 0);
   std::atomic<int> next{0};

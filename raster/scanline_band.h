@@ -118,115 +118,58 @@ class Band {
     return x;
   }
 
-  /// Row j's surfaces: visible polygon, depth and their uncertainty;
-  /// crossings_[0, carried) were active on the row before. The shadow
-  /// polygons are counted afterwards (scan_shadows).
+  // The passes over a band, each explained where it is defined:
+  // scanline_surfaces.cpp, scanline_shadows.cpp, scanline_flags.cpp.
+
+  /// Row j's visible points; crossings_[0, carried) were active on row j - 1.
   void scan_row(int j, std::size_t carried);
 
-  /// The shadow pass's lists for the current band, once its visible points
-  /// are known: shadow_edges_ gets the edges that start in the band and
-  /// loses those that ended before it (kept in edge order, which groups each
-  /// polygon's edges together), strips_ likewise; then live_ and
-  /// band_strips_ keep only what belongs to no shadow polygon found behind
-  /// the band (behind_in_band), which is most of them: the rows of the band
-  /// walk these shorter lists.
+  /// The shadow pass's edges and strips for the current band, less those of
+  /// shadow polygons behind it.
   void start_shadow_band();
 
-  /// Row j's shadow polygons (Bergeron's saving: a shadow polygon behind the
-  /// visible point changes nothing, so shadow polygons need no place in the
-  /// spans' depth order, nor in the x sort of the surfaces' edges, where tens
-  /// of thousands of them would cut the row into spans of a pixel or less).
-  /// Each live shadow polygon covers the pixels between pairs of its own
-  /// crossings of the row; at each such pixel with a visible point it is
-  /// compared with that point alone. Then the strips round every edge are
-  /// flagged.
+  /// Row j's shadow polygons, counted against its visible points; then its flags.
   void scan_shadows(int j);
 
+  /// Even-odd: surface `polygon` enters or leaves the current span's list.
   void toggle(std::uint32_t polygon);
 
+  /// The entry's depth and error bound along the camera-space direction d.
   void measure(DepthEntry& entry, const Vec3& d) const;
 
-  /// One span. Its surfaces keep a depth-ordered list, re-sorted pixel to
-  /// pixel by insertion (depths along a span change little); the first with
-  /// t > 0 is visible.
+  /// The visible point of each pixel of one span of row j.
   void shade_span(int i0, int i1, int j);
 
-  /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
-  /// point is visible, the polygon adds its weight to its light's count if
-  /// it lies between the eye and that point (a twisted one toggles its
-  /// group's flag instead, counted by count_groups). Its depth there, against
-  /// 0 and against the visible depth, must be clear of both error bounds, or
-  /// the pixel is uncertain.
+  /// Shadow polygon `polygon` over the pixels [i0, i1) of row j.
   void shade_shadow(std::uint32_t polygon, int i0, int i1, int j);
 
-  /// Twisted polygons crossed in front of the visible point, per pixel: each
-  /// group whose flag ends other than it started (an odd number of its
-  /// polygons crossed) changes its light's count by one, +1 where the flag is
-  /// set at the hit, -1 where it is cleared.
+  /// Row j's twisted groups whose flag changed in front of the visible point.
   void count_groups(int j);
 
-  /// The span walk above decides, for each polygon and pixel, on which side of
-  /// each of the polygon's projected edges the pixel centre lies. Flag every
-  /// pixel whose centre lies within δ_xy = 1e-6 pixel of the line of an edge
-  /// of a polygon that matters to it (a surface not clearly behind the visible
-  /// point, any shadow polygon not clearly behind it), measured as a distance,
-  /// not along the row, so nearly horizontal edges are caught too.
-  ///
-  /// The test is on the homogeneous line m of the edge: the screen distance
-  /// from the pixel centre q = d/d_z to the line is |m·d| / (|d_z|·|(m_x, m_y)|).
-  /// Besides 1e-6 pixel we allow the rounding error of m·d itself: m = Pa × Pb
-  /// from camera-space points each within a few ε·mag of exact, so
-  /// |Δ(m·d)| ≤ few·ε·mag·(|Pa| + |Pb|)·|d|, which 1e-12·m_scale·|d| bounds
-  /// generously. This replaces "1e-6 × the coordinates involved": huge
-  /// projected coordinates of clipped vertices do not enter it.
-  ///
-  /// Where the row passes within an endpoint's pixel error of that endpoint,
-  /// whether the edge is active on the row at all was decided in rounded
-  /// arithmetic; the pixels whose answer that can change lie within that
-  /// error of the edge's line, so the threshold grows by it on that row only.
+  /// Flags row j's pixels whose centre lies too near an edge that matters.
   void flag_near_edges(int j);
 
-  /// The pixels [i0, i1) of row j in the strip of edge e: the distance test.
+  /// The distance test on the pixels [i0, i1) of row j in edge t's strip.
   void flag_near_edge(const TableEdge& t, int i0, int i1, int j);
 
-  /// Could this polygon change pixel p's answer if the pixel were on the other
-  /// side of one of its edges? Not if it is clearly behind the visible point.
+  /// Could this polygon change pixel p's answer if the pixel were on the other side of one of its
+  /// edges? Not if it is clearly behind the visible point.
   bool matters(const ProjectedPolygon& polygon, int i, std::size_t p) const;
 
-  /// After the band's surface pass: per column, the largest upper bound
-  /// t·(1 + 1e-9) + error on an exact visible depth over the band's rows
-  /// (-infinity where nothing is seen), and the sparse table of its maxima
-  /// over runs of 2^k columns, so any run's maximum costs two lookups.
+  /// Per column, a bound on the band's visible depths, and its range maxima.
   void bound_band_depth();
 
   /// The largest visible-depth bound over columns [i0, i1], i0 <= i1.
   double band_depth_bound(int i0, int i1) const;
 
-  /// Is shadow polygon `polygon` clearly behind the visible point at every
-  /// pixel of the current band where it could count or flag? Judged once
-  /// per polygon and band.
+  /// Is shadow polygon `polygon` clearly behind the visible point at every pixel of the current
+  /// band where it could count or flag? Judged once per polygon and band.
   bool behind_in_band(std::uint32_t polygon);
 
-  /// Bergeron's saving, a band of rows at a time: a shadow polygon behind the
-  /// visible point changes nothing. The polygon's part in the band's rows,
-  /// widened by a pixel (which holds its edges' strips, cullable's margin
-  /// < 0.25, and the rounding of the clip), lies in a screen box; over the
-  /// box its plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is smallest at
-  /// a corner when n·d keeps one sign, and its error bound
-  /// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest (n·d
-  /// is linear) and |t·d − p0| largest; the latter is at most
-  /// t·|d|₁ + |p0|, a convex function over a positive linear one, hence
-  /// quasi-convex and largest at a corner too. If the smallest depth, less a
-  /// millionth (far above the rounding of these few operations and of the
-  /// sample rays, given |n·d| ≥ 1e-6·|n||d|) and less that error, exceeds the
-  /// box's largest visible-depth bound (plus too_close's 1e-9·z_near), then
-  /// at every pixel of the band shade_shadow would find the polygon behind
-  /// and clear of both error bounds, and matters() would say no: skipping it
-  /// changes no count and no flag.
+  /// Whether `polygon` lies clearly behind the band's visible points round it.
   bool behind_band(const ProjectedPolygon& polygon) const;
 
-  /// A polygon with no projected area is not drawn; every pixel of its
-  /// bounding box (plus a pixel) is flagged, whatever its depth.
+  /// Flags row j's pixels under a polygon with no projected area.
   void flag_degenerate(int j);
 
   const Scene& scene_;
