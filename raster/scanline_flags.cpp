@@ -8,8 +8,9 @@
 
 namespace umbra::raster::detail {
 
-/// The span walk above decides, for each polygon and pixel, on which side of
-/// each of the polygon's projected edges the pixel centre lies. Flag every
+/// The span walks (surfaces and shadow polygons alike) decide, for each
+/// polygon and pixel, on which side of each of the polygon's projected edges
+/// the pixel centre lies. Flag every
 /// pixel whose centre lies within δ_xy = 1e-6 pixel of the line of an edge
 /// of a polygon that matters to it (a surface not clearly behind the visible
 /// point, any shadow polygon not clearly behind it), measured as a distance,
@@ -27,6 +28,9 @@ namespace umbra::raster::detail {
 /// whether the edge is active on the row at all was decided in rounded
 /// arithmetic; the pixels whose answer that can change lie within that
 /// error of the edge's line, so the threshold grows by it on that row only.
+///
+/// The strips of shadow polygons behind the band are not in band_strips_:
+/// such a polygon matters at none of its pixels (behind_band).
 void Band::flag_near_edges(int j) {
   const int width = scene_.camera.frame.width;
   const double row_y = j + 0.5;
