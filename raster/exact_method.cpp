@@ -20,9 +20,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   progress.phase("exact", static_cast<std::uint64_t>(camera.height));
 
   parallel_rows(camera.height, options.threads, [&](int j) {
-    PixelSample sample;
-    sample.classes.resize(lights);
-    sample.counts.resize(lights);
+    PixelSample sample(lights);
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);

@@ -11,6 +11,10 @@
 namespace umbra::raster {
 
 struct PixelSample {
+  PixelSample() = default;
+  /// Room for `lights` classes and counts, reused pixel after pixel.
+  explicit PixelSample(std::size_t lights) : classes(lights), counts(lights) {}
+
   double t = 0;           ///< ray parameter of the visible point H = eye + t·d
   geometry::Vec3 normal;  ///< unit normal of the visible surface, either orientation
   SurfaceLook look;

@@ -191,9 +191,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       if (occlusion[k].tfar == -kInfinity) classes[slot[k]] = ShadowClass::shadowed;
     shadow_rays += occlusion.size();
 
-    PixelSample sample;
-    sample.classes.resize(lights);
-    sample.counts.resize(lights);
+    PixelSample sample(lights);
     for (std::size_t i = 0; i < width; ++i) {
       const std::size_t pixel = frame.pixel(static_cast<int>(i), j);
       const RTCRayHit& p = primary[i];

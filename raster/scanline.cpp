@@ -30,7 +30,6 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 namespace umbra::raster {
 
@@ -45,6 +44,8 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   const auto start = std::chrono::steady_clock::now();
   detail::Scene scene = detail::prepare(frame, polygons, lights, group_start, threads);
   if (!skip_hidden_shadows) std::fill(scene.cullable.begin(), scene.cullable.end(), 0);
+  scene.any_cullable =
+      std::find(scene.cullable.begin(), scene.cullable.end(), 1) != scene.cullable.end();
 
   ScanlineResult result;
   result.seconds_prepare =
@@ -79,19 +80,17 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // for any thread count.
   std::vector<std::uint64_t> spans(static_cast<std::size_t>(workers), 0);
   std::vector<std::uint64_t> skipped(static_cast<std::size_t>(workers), 0);
+  // One item per worker, each with its own Band (active lists, per-polygon
+  // state) taking chunks from the shared counter; parallel_rows rethrows a
+  // worker's exception here.
   std::atomic<int> next{0};
-  const auto work = [&](int w) {
+  parallel_rows(workers, static_cast<unsigned>(workers), [&](int w) {
     detail::Band band(scene, result, progress);
     for (int c = next++; c < chunks; c = next++)
       band.run(c * rows_per_chunk, std::min(frame.height, (c + 1) * rows_per_chunk));
     spans[static_cast<std::size_t>(w)] = band.spans();
     skipped[static_cast<std::size_t>(w)] = band.shadow_bands_skipped();
-  };
-  {
-    std::vector<std::jthread> pool;
-    for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
-    work(0);
-  }
+  });
 
   for (const std::uint64_t n : spans) result.spans += n;
   for (const std::uint64_t n : skipped) result.shadow_bands_skipped += n;

@@ -48,7 +48,8 @@ void Band::run(int row0, int row1) {
           if (!scene_.by_scan_row_shadow[k]) activate(k);
       scan_row(j, carried);
     }
-    bound_band_depth();
+    // Only behind_in_band reads the bound: a plain pass has nothing to skip.
+    if (scene_.any_cullable) bound_band_depth();
     start_shadow_band();
     // The band's shadow polygons and the strips round every edge.
     for (int j = b0; j < band1_; ++j) {

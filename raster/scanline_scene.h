@@ -73,6 +73,9 @@ struct Scene {
   /// Per polygon: a shadow polygon whose depth may be bounded over a band
   /// of rows (band_cull); others are always scanned.
   std::vector<std::uint8_t> cullable;
+  /// Some entry of `cullable` is set (scanline_render sets it once the
+  /// caller's choice is applied): otherwise no band needs a depth bound.
+  bool any_cullable = false;
   std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
   std::size_t lights = 0;
   std::vector<std::uint8_t> group_start;  ///< every twisted group's flag at the eye

@@ -103,9 +103,7 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   std::atomic<std::uint64_t> fallbacks{0};
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
   parallel_rows(camera.height, options.threads, [&](int j) {
-    PixelSample sample;
-    sample.classes.resize(lights);
-    sample.counts.resize(lights);
+    PixelSample sample(lights);
     std::uint64_t row_fallbacks = 0;
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
