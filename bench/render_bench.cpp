@@ -55,6 +55,7 @@ void render_frame(benchmark::State& state, const geometry::Scene& scene,
   state.counters["lights"] = static_cast<double>(scene.lights.size());
   state.counters["shadow_polygons"] = static_cast<double>(stats.shadow_polygons);
   state.counters["exact_fallbacks"] = static_cast<double>(stats.exact_fallback_pixels);
+  state.counters["exact_recounts"] = static_cast<double>(stats.exact_light_recounts);
   state.counters["samples_per_s"] =
       benchmark::Counter(samples, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["spans_per_s"] = benchmark::Counter(static_cast<double>(stats.spans),

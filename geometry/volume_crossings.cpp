@@ -8,21 +8,32 @@
 namespace umbra::geometry {
 
 VolumeCrossings::VolumeCrossings(const Scene& scene, const ShadowVolumes& volumes)
-    : scene_(&scene), volumes_(&volumes) {
-  std::vector<std::vector<Box>> boxes(scene.lights.size());
-  items_.resize(scene.lights.size());
+    : scene_(&scene),
+      volumes_(&volumes),
+      items_(scene.lights.size()),
+      per_light_(scene.lights.size()),
+      built_(std::make_unique<std::once_flag[]>(scene.lights.size())) {
   for (std::uint32_t i = 0; i < volumes.polygons.size(); ++i) {
     const ShadowPolygon& sp = volumes.polygons[i];
     if (sp.type != ShadowPolygonType::side) continue;
-    Box box;
-    for (const Vec3& v : sp.vertices) {
-      box.extend(v);
+    for (const Vec3& v : sp.vertices)
       magnitude_ = std::max({magnitude_, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    }
-    boxes[sp.light].push_back(box);
     items_[sp.light].push_back(i);
   }
-  for (auto& b : boxes) per_light_.emplace_back(std::move(b));
+}
+
+const Bvh& VolumeCrossings::bvh(std::uint32_t light) const {
+  std::call_once(built_[light], [&] {
+    std::vector<Box> boxes;
+    boxes.reserve(items_[light].size());
+    for (const std::uint32_t i : items_[light]) {
+      Box box;
+      for (const Vec3& v : volumes_->polygons[i].vertices) box.extend(v);
+      boxes.push_back(box);
+    }
+    per_light_[light] = Bvh(std::move(boxes));
+  });
+  return per_light_[light];
 }
 
 std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangle& hit,
@@ -37,8 +48,8 @@ std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangl
   const double t = ray_plane_parameter(ray.origin, ray.direction, hit.a, hit.b, hit.c);
   const double slack = 1e-9 * (magnitude_ + std::abs(t) * length(ray.direction)) + 1e-300;
   std::vector<std::uint32_t> candidates;
-  per_light_[light_index].query_segment(ray.origin, ray.origin + t * ray.direction, false, slack,
-                                        candidates);
+  bvh(light_index)
+      .query_segment(ray.origin, ray.origin + t * ray.direction, false, slack, candidates);
   int total = start.count[light_index];
   std::vector<std::int32_t> toggled;  // twisted groups crossed, each once per crossing
   for (std::uint32_t c : candidates) {

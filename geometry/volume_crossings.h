@@ -9,6 +9,8 @@
 #include <geometry/shadow_volume.h>
 #include <geometry/visible_surface.h>
 
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -16,7 +18,10 @@ namespace umbra::geometry {
 
 class VolumeCrossings {
  public:
-  /// Keeps references to both; they must outlive this object.
+  /// Keeps references to both; they must outlive this object. Cheap: a
+  /// light's BVH is built at its first count, so a render whose floating
+  /// point decided everything builds none. count() may be called from
+  /// several threads at once.
   VolumeCrossings(const Scene& scene, const ShadowVolumes& volumes);
 
   /// The count of light `light` at the sample point P of `hit`: the count at
@@ -34,10 +39,14 @@ class VolumeCrossings {
                            const EyeStart& start) const;
 
  private:
+  /// Light `light`'s BVH, built on first use.
+  const Bvh& bvh(std::uint32_t light) const;
+
   const Scene* scene_;
   const ShadowVolumes* volumes_;
-  std::vector<Bvh> per_light_;                     ///< over each light's shadow polygons
-  std::vector<std::vector<std::uint32_t>> items_;  ///< BVH item → index in volumes
+  std::vector<std::vector<std::uint32_t>> items_;    ///< BVH item → index in volumes
+  mutable std::vector<Bvh> per_light_;               ///< over each light's side polygons
+  mutable std::unique_ptr<std::once_flag[]> built_;  ///< per light
   double magnitude_ = 0;
 };
 

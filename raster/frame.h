@@ -1,6 +1,8 @@
 #pragma once
 // What every render method produces: the beauty pass and the AOVs of
 // DESIGN.md, as plain buffers, row-major from the top-left pixel.
+#include <raster/huge_pages.h>
+
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -18,18 +20,18 @@ inline constexpr float kDepthBackground = std::numeric_limits<float>::infinity()
 struct Frame {
   int width = 0;
   int height = 0;
-  std::vector<float> beauty;               ///< linear RGB, 3 floats a pixel
-  std::vector<std::vector<float>> shadow;  ///< per light: kShadowLit / Shadowed / OutOfRange
-  std::vector<std::vector<float>> count;   ///< per light: the final depth count
+  PixelPlane beauty;               ///< linear RGB, 3 floats a pixel
+  std::vector<PixelPlane> shadow;  ///< per light: kShadowLit / Shadowed / OutOfRange
+  std::vector<PixelPlane> count;   ///< per light: the final depth count
   /// Distance from the eye to the visible point along the sample ray
   /// (t·|d|); kDepthBackground where the ray hits nothing.
-  std::vector<float> depth;
+  PixelPlane depth;
 
   Frame() = default;
   /// Every buffer filled with its background value. With 16 lights at
-  /// 1280x720 that is 130 MB written (and page-faulted) before the render
-  /// starts, so the buffers are filled on up to `threads` threads (0: every
-  /// hardware thread).
+  /// 1280x720 that is 130 MB written (and page-faulted, in huge pages where
+  /// the system has them) before the render starts, so the buffers are
+  /// filled on up to `threads` threads (0: every hardware thread).
   Frame(int w, int h, std::size_t lights, unsigned threads = 1);
 
   std::size_t pixel(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }

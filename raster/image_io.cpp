@@ -118,7 +118,7 @@ void write_exr(const Frame& frame, const fs::path& path) {
   // otherwise record the current time).
   spec.attribute("DateTime", "");
 
-  std::vector<float> pixels(n * channels);
+  PixelPlane pixels(n * channels);
   for (std::size_t p = 0; p < n; ++p) {
     float* px = &pixels[p * channels];
     px[0] = frame.beauty[p * 3 + 0];
@@ -222,7 +222,7 @@ ShadowChannels read_shadow_channels(const fs::path& path) {
   result.height = spec.height;
   result.shadow.reserve(by_light.size());
   for (const auto& [index, channel] : by_light) {
-    std::vector<float> plane(n);
+    PixelPlane plane(n);
     for (std::size_t p = 0; p < n; ++p) plane[p] = pixels[p * nch + channel];
     result.shadow.push_back(std::move(plane));
   }

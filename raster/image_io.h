@@ -21,7 +21,7 @@ void write_frame(const Frame& frame, const std::filesystem::path& path);
 struct ShadowChannels {
   int width = 0;
   int height = 0;
-  std::vector<std::vector<float>> shadow;  ///< shadow.0, shadow.1, ... in order
+  std::vector<PixelPlane> shadow;  ///< shadow.0, shadow.1, ... in order
 };
 ShadowChannels read_shadow_channels(const std::filesystem::path& path);
 

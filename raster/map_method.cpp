@@ -132,7 +132,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       VisibleSample& s = visible[pixel];
       geometry::SurfaceHit hit;
       std::optional<std::uint32_t> entry_id;  ///< the scanline's entry, where it decided
-      if (!scan.uncertain[pixel]) {
+      if (!(scan.uncertain[pixel] & kSurfaceUncertain)) {
         if (scan.visible[pixel] < 0) continue;
         entry_id = static_cast<std::uint32_t>(scan.visible[pixel]);
         const SurfaceEntry& entry = table.entries[*entry_id];

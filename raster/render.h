@@ -77,7 +77,11 @@ struct RenderStats {
   /// (shadow polygon, band of 8 rows) pairs the scanline skipped whole: the
   /// polygon lies clearly behind every visible point round it there.
   std::uint64_t shadow_bands_skipped = 0;
+  /// Pixels decided again exactly in full: visible surface and every light.
   std::uint64_t exact_fallback_pixels = 0;
+  /// (pixel, light) counts decided again exactly where the visible point
+  /// stood but a shadow polygon of the light was too close to call.
+  std::uint64_t exact_light_recounts = 0;
   std::uint64_t twisted_polygons = 0;  ///< (light, polygon) pairs with an L-twist
   /// Lights for which no count at the eye is defined (the eye on one of
   /// their volumes' boundaries, or the segment from the eye to the light

@@ -60,6 +60,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   result.depth.resize(pixels);
   result.count.resize(pixels * lights);
   result.uncertain.resize(pixels);
+  result.light_mask.resize(pixels);
 
   // Rows go out in chunks to whichever worker is free: the work per row
   // varies tenfold (a mesh in one part of the picture, its shadow polygons
@@ -99,7 +100,9 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // z < z_near, which the clipping removed: nothing is certain then.
   const bool near_eye = std::any_of(scene.polygons.begin(), scene.polygons.end(),
                                     [](const detail::ProjectedPolygon& p) { return p.near_eye; });
-  if (near_eye) std::fill(result.uncertain.begin(), result.uncertain.end(), 1);
+  if (near_eye)
+    std::fill(result.uncertain.begin(), result.uncertain.end(),
+              static_cast<std::uint8_t>(kSurfaceUncertain));
   return result;
 }
 

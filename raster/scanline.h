@@ -2,7 +2,8 @@
 // Bouknight's scanline algorithm with Crow's shadow polygons in the same
 // sorts, in floating point. Where a floating-point decision at a sample is too
 // close to call, the pixel is flagged `uncertain` and the caller decides it
-// again exactly; every other pixel's answer is final.
+// again exactly (its visible point and every light, or only the lights whose
+// shadow polygons were too close to call); every other answer is final.
 #include <geometry/sample_ray.h>
 #include <raster/progress.h>
 #include <raster/uninitialized.h>
@@ -31,6 +32,18 @@ struct RasterPolygon {
   std::int32_t group = -1;
 };
 
+/// Bits of ScanlineResult::uncertain.
+/// The visible surface or its depth may be wrong: every answer at the pixel.
+inline constexpr std::uint8_t kSurfaceUncertain = 1;
+/// The visible point stands; the counts of the lights in light_mask may not.
+inline constexpr std::uint8_t kLightsUncertain = 2;
+
+/// The bit of light `light` in ScanlineResult::light_mask: lights 64 apart
+/// share one, and the caller recounts both.
+inline constexpr std::uint64_t light_bit(std::size_t light) {
+  return std::uint64_t{1} << (light % 64);
+}
+
 struct ScanlineResult {
   int width = 0, height = 0;
   std::size_t lights = 0;
@@ -44,7 +57,12 @@ struct ScanlineResult {
   /// the count at the eye is the caller's. 0 where the ray hits nothing:
   /// spans without a surface are skipped.
   UninitializedVector<std::int32_t> count;
+  /// kSurfaceUncertain and kLightsUncertain, or 0 where every answer is final.
   UninitializedVector<std::uint8_t> uncertain;
+  /// Per pixel, light_bit of every light whose count may be wrong: a shadow
+  /// polygon of it too close to call against the visible point, or the
+  /// pixel too near one of its edges. 0 where uncertain lacks kLightsUncertain.
+  UninitializedVector<std::uint64_t> light_mask;
   /// Spans shaded: runs of pixels between consecutive crossings of surface
   /// edges that hold a surface (shadow polygons' edges cut no spans).
   std::uint64_t spans = 0;

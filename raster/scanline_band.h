@@ -152,6 +152,16 @@ class Band {
   /// The distance test on the pixels [i0, i1) of row j in edge t's strip.
   void flag_near_edge(const TableEdge& t, int i0, int i1, int j);
 
+  /// Light `light`'s count at pixel p may be wrong.
+  void flag_light(std::size_t p, std::uint32_t light) {
+    result_.uncertain[p] |= kLightsUncertain;
+    result_.light_mask[p] |= light_bit(light);
+  }
+
+  /// Pixel p may be wrong where `polygon` decides it: its light's count for
+  /// a shadow polygon, everything for a surface.
+  void flag(std::size_t p, const ProjectedPolygon& polygon);
+
   /// Could this polygon change pixel p's answer if the pixel were on the other side of one of its
   /// edges? Not if it is clearly behind the visible point.
   bool matters(const ProjectedPolygon& polygon, int i, std::size_t p) const;

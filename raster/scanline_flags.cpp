@@ -56,15 +56,25 @@ void Band::flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
   const double scale = (1e-6 + extra) * scene_.camera.pixel_size * t.hyp;
   for (int i = i0; i < i1; ++i) {
     const std::size_t p = pixel(i, j);
-    if (result_.uncertain[p]) continue;
+    if (result_.uncertain[p] & kSurfaceUncertain) continue;
     // Where nothing is seen a shadow polygon changes nothing (matters()),
     // decided here before the distance test.
     if (t.shadow && result_.visible[p] < 0) continue;
     const Vec3& d = ray_[row_base_ + i];
     const double threshold = scale * std::abs(d.z) + t.rounding * ray_length_[row_base_ + i];
     if (std::abs(dot(e.m, d)) > threshold) continue;
-    if (matters(scene_.polygons[e.polygon], i, p)) result_.uncertain[p] = 1;
+    const ProjectedPolygon& polygon = scene_.polygons[e.polygon];
+    if (matters(polygon, i, p)) flag(p, polygon);
   }
+}
+
+/// A shadow polygon's doubt is its light's alone: the visible point and the
+/// other lights' counts do not depend on it. A surface's is every answer's.
+void Band::flag(std::size_t p, const ProjectedPolygon& polygon) {
+  if (polygon.kind == RasterPolygon::Kind::shadow)
+    flag_light(p, polygon.light);
+  else
+    result_.uncertain[p] |= kSurfaceUncertain;
 }
 
 /// Could this polygon change pixel p's answer if the pixel were on the other
@@ -92,7 +102,7 @@ void Band::flag_degenerate(int j) {
     if (row_y < polygon.bbox_y0 - 1 || row_y > polygon.bbox_y1 + 1) continue;
     const int i0 = clamp_column(std::ceil(polygon.bbox_x0 - 1.5), width);
     const int i1 = clamp_column(std::floor(polygon.bbox_x1 + 0.5) + 1, width);
-    for (int i = i0; i < i1; ++i) result_.uncertain[pixel(i, j)] = 1;
+    for (int i = i0; i < i1; ++i) flag(pixel(i, j), polygon);
   }
 }
 

@@ -82,7 +82,7 @@ void Band::scan_shadows(int j) {
 /// it lies between the eye and that point (a twisted one toggles its
 /// group's flag instead, counted by count_groups). Its depth there, against
 /// 0 and against the visible depth, must be clear of both error bounds, or
-/// the pixel is uncertain.
+/// the pixel is uncertain for the polygon's light.
 void Band::shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
   const ProjectedPolygon& shadow = scene_.polygons[polygon];
   const double z_near = scene_.camera.z_near;
@@ -105,7 +105,7 @@ void Band::shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
     const double offset_bound =
         (std::abs(t) * ray_length_[row_base_ + i] + shadow.p0_length) * (1 + 1e-9);
     if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
-      result_.uncertain[p] = 1;
+      flag_light(p, shadow.light);
     if (!(t > 0 && t < t_visible)) continue;
     if (shadow.group < 0)
       result_.count[p * scene_.lights + shadow.light] += shadow.weight;

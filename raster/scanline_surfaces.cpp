@@ -22,6 +22,7 @@ void Band::scan_row(int j, std::size_t carried) {
     result_.visible[p] = -1;
     result_.depth[p] = kInfinity;
     result_.uncertain[p] = 0;
+    result_.light_mask[p] = 0;
     visible_error_[row_base_ + i] = 0;
     for (std::size_t l = 0; l < scene_.lights; ++l) result_.count[p * scene_.lights + l] = 0;
   }
@@ -121,7 +122,7 @@ void Band::shade_span(int i0, int i1, int j) {
       result_.depth[p] = visible->t;
       visible_error_[row_base_ + i] = visible->err;
     }
-    if (uncertain) result_.uncertain[p] = 1;
+    if (uncertain) result_.uncertain[p] |= kSurfaceUncertain;
   }
 }
 

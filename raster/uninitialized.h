@@ -3,7 +3,10 @@
 // uninitialized. The scanline's per-pixel buffers (59 MB of counts at 16
 // lights and 1280x720) are written in full by the worker threads, so zeroing
 // them first on one thread is wasted time; untouched, their pages are also
-// first touched by the thread that fills them.
+// first touched by the thread that fills them. Large ones take huge pages
+// (huge_pages.h).
+#include <raster/huge_pages.h>
+
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -11,7 +14,7 @@
 
 namespace umbra::raster {
 
-template <class T, class Base = std::allocator<T>>
+template <class T, class Base = HugePageAllocator<T>>
 class DefaultInitAllocator : public Base {
  public:
   template <class U>

@@ -100,15 +100,34 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   start = Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
   Frame frame(camera.width, camera.height, lights, options.threads);
-  std::atomic<std::uint64_t> fallbacks{0};
+  std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
+  // Light l's count at a visible point, decided exactly on the ideal
+  // volumes; where even that meets a degenerate configuration (the eye
+  // segment through an edge of a side polygon, in its plane, or the eye on a
+  // volume), by the oracle, and count.<i> then holds 1 for shadowed, 0 for lit.
+  const auto decide_exactly = [&](const geometry::SampleRay& ray, const geometry::SurfaceHit& hit,
+                                  const geometry::HitTriangle& tri, std::size_t pixel,
+                                  std::uint32_t l, PixelSample& sample) {
+    const std::optional<int> count = !options.shadows    ? std::optional<int>(0)
+                                     : eye.degenerate[l] ? std::nullopt
+                                                         : crossings.count(ray, tri, l, eye);
+    if (count) {
+      sample.counts[l] = *count;
+      sample.classes[l] = class_of_count(*count, pixel, l);
+    } else {
+      sample.classes[l] = geometry::classify_sample(index, ray, hit, l).cls;
+      sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+    }
+  };
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
   parallel_rows(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
-    std::uint64_t row_fallbacks = 0;
+    std::uint64_t row_fallbacks = 0, row_recounts = 0;
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
-      if (!scan.uncertain[pixel]) {
+      const std::uint8_t doubt = scan.uncertain[pixel];
+      if (!(doubt & kSurfaceUncertain)) {
         const std::int32_t id = scan.visible[pixel];
         if (id < 0) {
           store_background(pixel, frame);
@@ -135,6 +154,13 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
             sample.counts[l] = 0;
             continue;
           }
+          if ((doubt & kLightsUncertain) && (scan.light_mask[pixel] & light_bit(l))) {
+            // A shadow polygon of this light was too close to call: its
+            // count again, exactly, at the visible point that stands.
+            ++row_recounts;
+            decide_exactly(ray, entry.hit, tri, pixel, l, sample);
+            continue;
+          }
           sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
           sample.classes[l] = class_of_count(sample.counts[l], pixel, l);
         }
@@ -156,26 +182,16 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
           sample.counts[l] = 0;
           continue;
         }
-        const std::optional<int> count = !options.shadows    ? std::optional<int>(0)
-                                         : eye.degenerate[l] ? std::nullopt
-                                                             : crossings.count(ray, tri, l, eye);
-        if (count) {
-          sample.counts[l] = *count;
-          sample.classes[l] = class_of_count(*count, pixel, l);
-        } else {
-          // The eye segment meets a volume degenerately (through an edge of a
-          // side polygon, in its plane), or the eye lies on a volume: the
-          // oracle decides; count.<i> then holds 1 for shadowed, 0 for lit.
-          sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;
-          sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
-        }
+        decide_exactly(ray, *hit, tri, pixel, l, sample);
       }
       store_sample(scene, ray, sample, pixel, frame);
     }
     fallbacks += row_fallbacks;
+    recounts += row_recounts;
     progress.advance();
   });
   stats.exact_fallback_pixels = fallbacks;
+  stats.exact_light_recounts = recounts;
   stats.seconds_decide = seconds_since(start);
   return frame;
 }

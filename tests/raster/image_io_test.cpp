@@ -76,7 +76,7 @@ TEST_F(ImageIoTest, ExrRoundTripWithTwelveLightsKeepsChannelsByName) {
   const auto channel = [&](const std::string& name) {
     const int c = spec.channelindex(name);
     EXPECT_GE(c, 0) << name;
-    std::vector<float> plane;
+    PixelPlane plane;
     for (std::size_t p = 0; p < 35; ++p) plane.push_back(pixels[p * spec.nchannels + c]);
     return plane;
   };

@@ -93,18 +93,19 @@ Reference reference(const CameraFrame& frame, const std::vector<RasterPolygon>& 
   return ref;
 }
 
-/// Every pixel not flagged uncertain must equal the reference; returns the
-/// number of uncertain pixels.
+/// Every pixel whose visible surface is not flagged uncertain must equal the
+/// reference in its visible id, depth and the count of every light not in
+/// its light_mask; returns the number of pixels with any flag.
 int expect_matches_reference(const CameraFrame& frame, const std::vector<RasterPolygon>& polys,
                              std::size_t lights, const ScanlineResult& result) {
   int uncertain = 0, failures = 0;
   for (int j = 0; j < frame.height && failures < 10; ++j)
     for (int i = 0; i < frame.width && failures < 10; ++i) {
       const std::size_t p = static_cast<std::size_t>(j) * frame.width + i;
-      if (result.uncertain[p]) {
-        ++uncertain;
-        continue;
-      }
+      uncertain += result.uncertain[p] != 0;
+      if (result.uncertain[p] & kSurfaceUncertain) continue;
+      const bool lights_uncertain = (result.uncertain[p] & kLightsUncertain) != 0;
+      EXPECT_EQ(lights_uncertain, result.light_mask[p] != 0) << "pixel " << i << "," << j;
       const Reference ref = reference(frame, polys, lights, i, j);
       EXPECT_EQ(result.visible[p], ref.visible) << "pixel " << i << "," << j;
       failures += result.visible[p] != ref.visible;
@@ -113,8 +114,8 @@ int expect_matches_reference(const CameraFrame& frame, const std::vector<RasterP
             << "pixel " << i << "," << j;
       else
         EXPECT_EQ(result.depth[p], std::numeric_limits<double>::infinity());
-      for (std::size_t l = 0; l < lights; ++l)
-      {
+      for (std::size_t l = 0; l < lights; ++l) {
+        if (result.light_mask[p] & light_bit(l)) continue;
         EXPECT_EQ(result.count[p * lights + l], ref.count[l]) << "pixel " << i << "," << j << " light " << l;
         failures += result.count[p * lights + l] != ref.count[l];
       }
@@ -124,7 +125,7 @@ int expect_matches_reference(const CameraFrame& frame, const std::vector<RasterP
 
 int count_uncertain(const ScanlineResult& r) {
   int n = 0;
-  for (auto u : r.uncertain) n += u;
+  for (auto u : r.uncertain) n += u != 0;
   return n;
 }
 
@@ -345,24 +346,27 @@ TEST(ScanlineUncertainty, PixelCentreOnAnEdgeIsFlaggedAndFarPixelsAreNot) {
   const std::vector<RasterPolygon> vertical{surface(
       {{x.x, -3, 1}, {x.x + 2, -3, 1}, {x.x + 2, 3, 1}, {x.x, 3, 1}}, 1)};
   const ScanlineResult rv = scanline_render(frame, vertical, 0, 1);
-  EXPECT_EQ(rv.uncertain[j * 16 + i], 1);
+  EXPECT_EQ(rv.uncertain[j * 16 + i], kSurfaceUncertain);
   EXPECT_EQ(rv.uncertain[j * 16 + 14], 0);  // well inside
   EXPECT_EQ(rv.uncertain[j * 16 + 2], 0);   // well outside
   // The same with a horizontal edge through it: a distance, not a crossing x.
   const std::vector<RasterPolygon> horizontal{surface(
       {{-3, x.y, 1}, {3, x.y, 1}, {3, x.y + 3, 1}, {-3, x.y + 3, 1}}, 1)};
   const ScanlineResult rh = scanline_render(frame, horizontal, 0, 1);
-  EXPECT_EQ(rh.uncertain[j * 16 + i], 1);
-  EXPECT_EQ(rh.uncertain[j * 16 + 3], 1);  // same row, also on the edge's line
+  EXPECT_EQ(rh.uncertain[j * 16 + i], kSurfaceUncertain);
+  EXPECT_EQ(rh.uncertain[j * 16 + 3], kSurfaceUncertain);  // same row, also on the edge's line
   EXPECT_EQ(rh.uncertain[2 * 16 + i], 0);
   EXPECT_EQ(rh.uncertain[9 * 16 + i], 0);
-  // And for a shadow polygon's edge in front of a surface.
+  // And for a shadow polygon's edge in front of a surface: the visible point
+  // stands, only the count of the polygon's light (1 of 2) is in doubt.
   const std::vector<RasterPolygon> shadowed{
       surface(square_z(-4, -4, 4, 4, 0), 2),
-      shadow({{x.x, -3, 1}, {x.x + 2, -3, 1}, {x.x + 2, 3, 1}, {x.x, 3, 1}}, 0, 1)};
-  const ScanlineResult rs = scanline_render(frame, shadowed, 1, 1);
-  EXPECT_EQ(rs.uncertain[j * 16 + i], 1);
+      shadow({{x.x, -3, 1}, {x.x + 2, -3, 1}, {x.x + 2, 3, 1}, {x.x, 3, 1}}, 1, 1)};
+  const ScanlineResult rs = scanline_render(frame, shadowed, 2, 1);
+  EXPECT_EQ(rs.uncertain[j * 16 + i], kLightsUncertain);
+  EXPECT_EQ(rs.light_mask[j * 16 + i], light_bit(1));
   EXPECT_EQ(rs.uncertain[j * 16 + 14], 0);
+  EXPECT_EQ(rs.light_mask[j * 16 + 14], 0u);
   // ...but not when the shadow polygon is behind the visible surface.
   const std::vector<RasterPolygon> hidden{
       surface(square_z(-40, -40, 40, 40, 2), 2),
@@ -376,7 +380,7 @@ TEST(ScanlineUncertainty, TwoSurfacesAtTheSameDepthAreFlagged) {
                                          surface(square_z(-1, -1, 3, 3, 0), 2)};
   const ScanlineResult r = scanline_render(frame, polys, 0, 1);
   const int centre = 7 * 16 + 8;  // inside both
-  EXPECT_EQ(r.uncertain[centre], 1);
+  EXPECT_EQ(r.uncertain[centre], kSurfaceUncertain);
   EXPECT_EQ(r.uncertain[10 * 16 + 5], 0);  // lower left, only in polygon 1
   EXPECT_EQ(r.visible[10 * 16 + 5], 1);
 }
@@ -388,8 +392,10 @@ TEST(ScanlineUncertainty, EdgeOnPolygonFlagsItsBoundingBox) {
       surface(square_z(-4, -4, 4, 4, 0), 1),
       shadow({{-1, 0, 1}, {1, 0, 1}, {1, 0, 3}, {-1, 0, 3}}, 0, 1)};
   const ScanlineResult r = scanline_render(frame, polys, 1, 1);
-  EXPECT_EQ(r.uncertain[7 * 16 + 8], 1);
-  EXPECT_EQ(r.uncertain[8 * 16 + 8], 1);
+  // A shadow polygon: its light's count is in doubt, not the visible point.
+  EXPECT_EQ(r.uncertain[7 * 16 + 8], kLightsUncertain);
+  EXPECT_EQ(r.uncertain[8 * 16 + 8], kLightsUncertain);
+  EXPECT_EQ(r.light_mask[8 * 16 + 8], light_bit(0));
   EXPECT_EQ(r.uncertain[2 * 16 + 8], 0);
 }
 

@@ -1,0 +1,62 @@
+// The per-pixel buffers' allocator (raster/huge_pages.h): large blocks are
+// mapped apart on 2 MiB boundaries, small ones come from std::allocator, and
+// both hold what is written to them through every container operation.
+#include <raster/huge_pages.h>
+#include <raster/uninitialized.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+
+namespace umbra::raster {
+namespace {
+
+constexpr std::uintptr_t kTwoMiB = std::uintptr_t{2} << 20;
+
+std::uintptr_t address(const void* p) { return reinterpret_cast<std::uintptr_t>(p); }
+
+TEST(HugePages, LargePlanesAreAlignedToHugePagesAndHoldTheirValues) {
+  // A 1280x720 float plane: 3.7 MB, above the threshold.
+  PixelPlane plane(1280 * 720);
+  ASSERT_GE(plane.size() * sizeof(float), kHugePageMinBytes);
+  EXPECT_EQ(address(plane.data()) % kTwoMiB, 0u);
+  // Value-initialized, then written in full and read back.
+  EXPECT_EQ(std::count(plane.begin(), plane.end(), 0.0f), static_cast<long>(plane.size()));
+  std::iota(plane.begin(), plane.end(), 0.0f);
+  EXPECT_EQ(plane[0], 0.0f);
+  EXPECT_EQ(plane[921599], 921599.0f);
+  // Growing moves the values to a new mapping, also aligned.
+  plane.resize(plane.size() * 2, -1.0f);
+  EXPECT_EQ(address(plane.data()) % kTwoMiB, 0u);
+  EXPECT_EQ(plane[921599], 921599.0f);
+  EXPECT_EQ(plane[921600], -1.0f);
+  // Copies hold the same values in their own block.
+  const PixelPlane copy = plane;
+  EXPECT_NE(copy.data(), plane.data());
+  EXPECT_EQ(copy, plane);
+}
+
+TEST(HugePages, SmallBlocksAndShrinkingBackWork) {
+  PixelPlane small(100, 2.5f);
+  EXPECT_EQ(small[99], 2.5f);
+  // Shrinking below the threshold and releasing takes the same path back
+  // (deallocate is given the size allocate was).
+  PixelPlane big(kHugePageMinBytes / sizeof(float) + 1, 1.0f);
+  big.resize(10);
+  big.shrink_to_fit();
+  EXPECT_EQ(big.size(), 10u);
+  EXPECT_EQ(big[9], 1.0f);
+}
+
+TEST(HugePages, UninitializedVectorsUseThemToo) {
+  UninitializedVector<std::uint64_t> masks;
+  masks.resize(1 << 20);  // 8 MiB
+  EXPECT_EQ(address(masks.data()) % kTwoMiB, 0u);
+  masks[(1 << 20) - 1] = 7;
+  EXPECT_EQ(masks.back(), 7u);
+}
+
+}  // namespace
+}  // namespace umbra::raster
