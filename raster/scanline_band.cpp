@@ -64,14 +64,14 @@ void Band::run(int row0, int row1) {
 void Band::activate(std::size_t k) {
   const std::uint32_t e = scene_.by_scan_row[k];
   const TableEdge& t = scene_.edges[e];
-  crossings_.push_back({0, t.edge->m, e, t.edge->polygon, t.scan.last});
+  crossings_.push_back({0, t.edge->m, row_scale(t.edge->m), e, t.edge->polygon, t.scan.last});
 }
 
 /// The shadow edge at place k of the y bucket sort.
 Band::ShadowEdge Band::make_shadow_edge(std::size_t k) const {
   const std::uint32_t e = scene_.by_scan_row[k];
   const TableEdge& t = scene_.edges[e];
-  return {t.edge->m, e, t.edge->polygon, t.scan.first, t.scan.last};
+  return {t.edge->m, row_scale(t.edge->m), e, t.edge->polygon, t.scan.first, t.scan.last};
 }
 
 /// The strip of the edge at place k of the near rows' bucket sort.

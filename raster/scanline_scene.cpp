@@ -40,6 +40,57 @@ void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, i
   }
 }
 
+}  // namespace
+
+/// Over the box, the plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is
+/// smallest at a corner when n·d keeps one sign, and its error bound
+/// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest (n·d
+/// is linear) and |t·d − p0| largest; the latter is at most t·|d|₁ + |p0|,
+/// a convex function over a positive linear one, hence quasi-convex and
+/// largest at a corner too. The floor is the smallest depth less a
+/// millionth (far above the rounding of these few operations and of the
+/// sample rays, given |n·d| ≥ 1e-6·|n||d|) less that error. Only pixel
+/// centres matter, and they lie in [0.5, width − 0.5]: the box is cut to
+/// the image (a clipped polygon's part reaches 1e11 pixels, a box over which
+/// its plane's n·d would change sign) before any conversion.
+DepthFloor depth_floor(const ProjectedPolygon& polygon, const CameraSpace& camera, double x_lo,
+                       double x_hi, double y0, double y1) {
+  const geometry::CameraFrame& frame = camera.frame;
+  x_lo = std::max(x_lo, 0.0);
+  x_hi = std::min(x_hi, static_cast<double>(frame.width));
+  DepthFloor out;
+  out.i0 = clamp_column(std::ceil(x_lo - 0.5), frame.width);
+  out.i1 = clamp_column(std::floor(x_hi - 0.5) + 1, frame.width) - 1;
+  if (out.i0 > out.i1) return out;
+  if (!(y0 <= y1)) return out;  // no rows: no bound, the caller scans
+  const double ah = frame.a * frame.h;
+  const double n_length2 = polygon.n_length * polygon.n_length;
+  double t_min = kInfinity, offset = 0, denominator = kInfinity;
+  int sign = 0;
+  for (const double x : {x_lo, x_hi})
+    for (const double y : {y0, y1}) {
+      const Vec3 d{(2.0 * x / frame.width - 1.0) * ah, (1.0 - 2.0 * y / frame.height) * frame.h,
+                   1.0};
+      const double n_d = dot(polygon.n, d);
+      // |n·d| ≥ 1e-6·|n||d|, squared: no square root.
+      if (!(n_d * n_d >= 1e-12 * n_length2 * dot(d, d))) return out;
+      const int s = n_d > 0 ? 1 : -1;
+      if (sign != 0 && s != sign) return out;
+      sign = s;
+      const double t = polygon.n_dot_p0 / n_d;
+      if (!(t > 0)) return out;
+      t_min = std::min(t_min, t);
+      // |t·d − p0| ≤ t·|d|₁ + |p0|: a larger offset only makes the error
+      // bound larger.
+      offset = std::max(offset, t * (std::abs(d.x) + std::abs(d.y) + 1) + polygon.p0_length);
+      denominator = std::min(denominator, std::abs(n_d));
+    }
+  out.floor = t_min * (1 - 1e-6) - polygon.depth_error_of(offset, denominator);
+  return out;
+}
+
+namespace {
+
 /// Edge e of a projected polygon as the y bucket sort holds it.
 TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double ray_slant) {
   const geometry::CameraFrame& frame = camera.frame;
@@ -165,6 +216,7 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   }
   scene.edges.resize(first_edge.back());
   scene.cullable.assign(scene.polygons.size(), 0);
+  scene.floors.resize(scene.polygons.size());
   parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       const ProjectedPolygon& polygon = scene.polygons[k];
@@ -185,6 +237,13 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
                    std::abs(e.ya) < 1e12 && std::abs(e.xb) < 1e12 && std::abs(e.yb) < 1e12;
       }
       scene.cullable[k] = cullable;
+      // The bounding box holds every endpoint's error; widened by a pixel
+      // like the band's box (Band::behind_band), and cut to the rows.
+      if (cullable)
+        scene.floors[k] =
+            depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1,
+                        std::max(polygon.bbox_y0 - 1, 0.0),
+                        std::min(polygon.bbox_y1 + 1, static_cast<double>(frame.height)));
     }
   });
   bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,

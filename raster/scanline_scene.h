@@ -31,6 +31,20 @@ inline int clamp_column(double c, int width) {
   return static_cast<int>(c);
 }
 
+/// A shadow polygon's depth over a screen box, for skipping it where it is
+/// clearly behind every visible point (Band::behind_band).
+struct DepthFloor {
+  /// Below the polygon's depth less its error bound (depth_error) at every
+  /// pixel centre of the box; -infinity when no such bound was found.
+  double floor = -kInfinity;
+  int i0 = 0, i1 = -1;  ///< the columns whose centres lie in the box (empty: i0 > i1)
+};
+
+/// The depth floor of `polygon` over the box [x_lo, x_hi] × [y0, y1] in pixel
+/// coordinates, cut to the image's width first.
+DepthFloor depth_floor(const ProjectedPolygon& polygon, const CameraSpace& camera, double x_lo,
+                       double x_hi, double y0, double y1);
+
 /// An edge in the y bucket sort, with the rows on which it is active and the
 /// wider range of rows whose pixels may lie close enough to it to be flagged.
 struct TableEdge {
@@ -73,6 +87,9 @@ struct Scene {
   /// Per polygon: a shadow polygon whose depth may be bounded over a band
   /// of rows (band_cull); others are always scanned.
   std::vector<std::uint8_t> cullable;
+  /// Per cullable polygon: its depth floor over its whole bounding box,
+  /// widened by a pixel (Band::behind_band's first test).
+  std::vector<DepthFloor> floors;
   /// Some entry of `cullable` is set (scanline_render sets it once the
   /// caller's choice is applied): otherwise no band needs a depth bound.
   bool any_cullable = false;

@@ -63,7 +63,7 @@ void Band::scan_shadows(int j) {
     for (; k < live_.size() && live_[k].polygon == polygon; ++k) {
       const ShadowEdge& e = live_[k];
       if (e.first > j || e.last < j) continue;
-      columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.edge, j) - 0.5), width));
+      columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.c, e.edge, j) - 0.5), width));
     }
     // Pixel i is inside when an odd number of the polygon's crossings lie
     // at columns <= i: the even-odd rule of the span walk, whose spans
@@ -183,7 +183,7 @@ bool Band::behind_in_band(std::uint32_t polygon) {
   if (!scene_.cullable[polygon]) return false;
   if (cull_band_[polygon] != band0_) {
     cull_band_[polygon] = band0_;
-    culled_[polygon] = behind_band(scene_.polygons[polygon]);
+    culled_[polygon] = behind_band(polygon);
     skipped_ += culled_[polygon];
   }
   return culled_[polygon] != 0;
@@ -192,22 +192,24 @@ bool Band::behind_in_band(std::uint32_t polygon) {
 /// Bergeron's saving, a band of rows at a time: a shadow polygon behind the
 /// visible point changes nothing. The polygon's part in the band's rows,
 /// widened by a pixel (which holds its edges' strips, cullable's margin
-/// < 0.25, and the rounding of the clip), lies in a screen box; over the
-/// box its plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is smallest at
-/// a corner when n·d keeps one sign, and its error bound
-/// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest (n·d
-/// is linear) and |t·d − p0| largest; the latter is at most
-/// t·|d|₁ + |p0|, a convex function over a positive linear one, hence
-/// quasi-convex and largest at a corner too. If the smallest depth, less a
-/// millionth (far above the rounding of these few operations and of the
-/// sample rays, given |n·d| ≥ 1e-6·|n||d|) and less that error, exceeds the
-/// box's largest visible-depth bound (plus too_close's 1e-9·z_near), then
-/// at every pixel of the band shade_shadow would find the polygon behind
-/// and clear of both error bounds, and matters() would say no: skipping it
-/// changes no count and no flag.
-bool Band::behind_band(const ProjectedPolygon& polygon) const {
+/// < 0.25, and the rounding of the clip), lies in a screen box. If the
+/// polygon's depth floor over the box (depth_floor, scanline_scene.cpp)
+/// exceeds the box's largest visible-depth bound plus too_close's
+/// 1e-9·z_near, then at every pixel of the band shade_shadow would find the
+/// polygon behind and clear of both error bounds, and matters() would say
+/// no: skipping it changes no count and no flag.
+///
+/// First the same test over the polygon's whole box (Scene::floors, made
+/// once): that box holds the band's, so its floor is no higher and its
+/// columns' visible bound no lower, and passing it passes the band's test.
+/// It settles most polygons without clipping their edges to the band.
+bool Band::behind_band(std::uint32_t index) const {
+  const ProjectedPolygon& polygon = scene_.polygons[index];
   const CameraSpace& camera = scene_.camera;
   const geometry::CameraFrame& frame = camera.frame;
+  const DepthFloor& whole = scene_.floors[index];
+  if (whole.i0 > whole.i1) return true;  // no pixel centre in the image
+  if (whole.floor > band_depth_bound(whole.i0, whole.i1) + 1e-9 * camera.z_near) return true;
   const double y0 = band0_ - 0.5, y1 = band1_ + 0.5;
   double x_lo = kInfinity, x_hi = -kInfinity;
   for (const ProjectedEdge& e : polygon.edges) {
@@ -226,37 +228,11 @@ bool Band::behind_band(const ProjectedPolygon& polygon) const {
   // Only pixel centres matter, and they lie in [0.5, width - 0.5]: the box
   // is cut to the image (a clipped polygon's part reaches 1e11 pixels, a box
   // over which its plane's n·d would change sign), before any conversion.
-  x_lo = std::max(x_lo - 1, 0.0);
-  x_hi = std::min(x_hi + 1, static_cast<double>(frame.width));
-  const int i0 = clamp_column(std::ceil(x_lo - 0.5), frame.width);
-  const int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, frame.width) - 1;
-  if (i0 > i1) return true;  // no pixel centre in the box
-  const double visible = band_depth_bound(i0, i1);
+  const DepthFloor band = depth_floor(polygon, camera, x_lo - 1, x_hi + 1, y0, y1);
+  if (band.i0 > band.i1) return true;  // no pixel centre in the box
+  const double visible = band_depth_bound(band.i0, band.i1);
   if (visible == -kInfinity) return true;  // nothing seen: no count to change
-  const double ah = frame.a * frame.h;
-  const double n_length2 = polygon.n_length * polygon.n_length;
-  double t_min = kInfinity, offset = 0, denominator = kInfinity;
-  int sign = 0;
-  for (const double x : {x_lo, x_hi})
-    for (const double y : {y0, y1}) {
-      const Vec3 d{(2.0 * x / frame.width - 1.0) * ah, (1.0 - 2.0 * y / frame.height) * frame.h,
-                   1.0};
-      const double n_d = dot(polygon.n, d);
-      // |n·d| ≥ 1e-6·|n||d|, squared: no square root.
-      if (!(n_d * n_d >= 1e-12 * n_length2 * dot(d, d))) return false;
-      const int s = n_d > 0 ? 1 : -1;
-      if (sign != 0 && s != sign) return false;
-      sign = s;
-      const double t = polygon.n_dot_p0 / n_d;
-      if (!(t > 0)) return false;
-      t_min = std::min(t_min, t);
-      // |t·d − p0| ≤ t·|d|₁ + |p0|: a larger offset only makes the error
-      // bound larger.
-      offset = std::max(offset, t * (std::abs(d.x) + std::abs(d.y) + 1) + polygon.p0_length);
-      denominator = std::min(denominator, std::abs(n_d));
-    }
-  const double error = polygon.depth_error_of(offset, denominator);
-  return t_min * (1 - 1e-6) - error > visible + 1e-9 * camera.z_near;
+  return band.floor > visible + 1e-9 * camera.z_near;
 }
 
 }  // namespace umbra::raster::detail
