@@ -52,11 +52,9 @@ void Band::run(int row0, int row1) {
     if (scene_.any_cullable) bound_band_depth();
     start_shadow_band();
     // The band's shadow polygons and the strips round every edge.
-    for (int j = b0; j < band1_; ++j) {
-      row_base_ = static_cast<std::size_t>(j - b0) * width;
-      scan_shadows(j);
-      if (progress_) progress_->advance();
-    }
+    scan_shadows();
+    if (progress_)
+      for (int j = b0; j < band1_; ++j) progress_->advance();
   }
 }
 

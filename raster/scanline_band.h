@@ -144,8 +144,8 @@ class Band {
   /// shadow polygons behind it.
   void start_shadow_band();
 
-  /// Row j's shadow polygons, counted against its visible points; then its flags.
-  void scan_shadows(int j);
+  /// The band's shadow polygons, counted against its visible points; then its flags.
+  void scan_shadows();
 
   /// Even-odd: surface `polygon` enters or leaves the current span's list.
   void toggle(std::uint32_t polygon);
@@ -159,11 +159,11 @@ class Band {
   /// Shadow polygon `polygon` over the pixels [i0, i1) of row j.
   void shade_shadow(std::uint32_t polygon, int i0, int i1, int j);
 
-  /// Row j's twisted groups whose flag changed in front of the visible point.
-  void count_groups(int j);
+  /// The band's twisted groups whose flag changed in front of the visible point.
+  void count_groups();
 
-  /// Flags row j's pixels whose centre lies too near an edge that matters.
-  void flag_near_edges(int j);
+  /// Flags the band's pixels whose centre lies too near an edge that matters.
+  void flag_near_edges();
 
   /// The distance test on the pixels [i0, i1) of row j in edge t's strip.
   void flag_near_edge(const TableEdge& t, int i0, int i1, int j);
@@ -225,8 +225,8 @@ class Band {
   std::vector<std::vector<double>> depth_bound_;
   std::vector<int> cull_band_;        // per polygon: first row of the band last judged, or -1
   std::vector<std::uint8_t> culled_;  // per polygon: behind in that band
-  // (column, polygon): twisted shadow polygons crossed in front of the visible point on the row
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> group_hits_;
+  // (pixel, polygon): twisted shadow polygons crossed in front of the visible point in the band
+  std::vector<std::pair<std::size_t, std::uint32_t>> group_hits_;
 };
 
 }  // namespace umbra::raster::detail

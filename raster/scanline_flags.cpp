@@ -31,18 +31,25 @@ namespace umbra::raster::detail {
 ///
 /// The strips of shadow polygons behind the band are not in band_strips_:
 /// such a polygon matters at none of its pixels (behind_band).
-void Band::flag_near_edges(int j) {
+///
+/// Strip by strip, each over its rows in the band (as scan_shadows walks
+/// polygons): flags are ORs, so the order changes nothing.
+void Band::flag_near_edges() {
   const int width = scene_.camera.frame.width;
-  const double row_y = j + 0.5;
   for (const NearStrip& strip : band_strips_) {
-    if (strip.first > j || strip.last < j) continue;
-    const double x = strip.x0 + row_y * strip.slope;
-    const double x_lo = std::max(x - strip.half_width, strip.x_lo);
-    const double x_hi = std::min(x + strip.half_width, strip.x_hi);
-    int i0 = clamp_column(std::ceil(x_lo - 0.5), width);
-    int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
-    if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
-    if (i0 < i1) flag_near_edge(scene_.edges[strip.edge], i0, i1, j);
+    const int j0 = std::max(strip.first, band0_), j1 = std::min(strip.last + 1, band1_);
+    for (int j = j0; j < j1; ++j) {
+      const double row_y = j + 0.5;
+      const double x = strip.x0 + row_y * strip.slope;
+      const double x_lo = std::max(x - strip.half_width, strip.x_lo);
+      const double x_hi = std::min(x + strip.half_width, strip.x_hi);
+      int i0 = clamp_column(std::ceil(x_lo - 0.5), width);
+      int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
+      if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
+      if (i0 >= i1) continue;
+      row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
+      flag_near_edge(scene_.edges[strip.edge], i0, i1, j);
+    }
   }
 }
 

@@ -47,34 +47,48 @@ void Band::start_shadow_band() {
     if (!(strip.shadow && behind_in_band(strip.polygon))) band_strips_.push_back(strip);
 }
 
-/// Row j's shadow polygons (Bergeron's saving: a shadow polygon behind the
-/// visible point changes nothing, so shadow polygons need no place in the
-/// spans' depth order, nor in the x sort of the surfaces' edges, where tens
-/// of thousands of them would cut the row into spans of a pixel or less).
-/// Each live shadow polygon covers the pixels between pairs of its own
-/// crossings of the row; at each such pixel with a visible point it is
-/// compared with that point alone. Then the strips round every edge are
-/// flagged.
-void Band::scan_shadows(int j) {
+/// The band's shadow polygons (Bergeron's saving: a shadow polygon behind
+/// the visible point changes nothing, so shadow polygons need no place in
+/// the spans' depth order, nor in the x sort of the surfaces' edges, where
+/// tens of thousands of them would cut the row into spans of a pixel or
+/// less). Each live shadow polygon covers, on each row, the pixels between
+/// pairs of its own crossings of the row; at each such pixel with a visible
+/// point it is compared with that point alone. Then the strips round every
+/// edge are flagged.
+///
+/// Polygon by polygon, each over the band's rows: most cover about a pixel
+/// per row, so the cost is fetching the polygon, which then serves 8 rows
+/// instead of one (row by row, the thousands of polygons between two visits
+/// pushed it out of the cache). Counts are sums and flags are ORs, and the
+/// twisted groups are settled per pixel afterwards, so the order of the
+/// visits changes no value.
+void Band::scan_shadows() {
   const int width = scene_.camera.frame.width;
   for (std::size_t k = 0; k < live_.size();) {
     const std::uint32_t polygon = live_[k].polygon;
-    columns_.clear();
-    for (; k < live_.size() && live_[k].polygon == polygon; ++k) {
-      const ShadowEdge& e = live_[k];
-      if (e.first > j || e.last < j) continue;
-      columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.c, e.edge, j) - 0.5), width));
+    std::size_t end = k;
+    while (end < live_.size() && live_[end].polygon == polygon) ++end;
+    for (int j = band0_; j < band1_; ++j) {
+      columns_.clear();
+      for (std::size_t n = k; n < end; ++n) {
+        const ShadowEdge& e = live_[n];
+        if (e.first > j || e.last < j) continue;
+        columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.c, e.edge, j) - 0.5), width));
+      }
+      if (columns_.empty()) continue;
+      // Pixel i is inside when an odd number of the polygon's crossings lie
+      // at columns <= i: the even-odd rule of the span walk, whose spans
+      // start at these columns. So: the pixels between consecutive pairs.
+      std::sort(columns_.begin(), columns_.end());
+      row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
+      for (std::size_t m = 0; m < columns_.size(); m += 2)
+        shade_shadow(polygon, columns_[m], m + 1 < columns_.size() ? columns_[m + 1] : width, j);
     }
-    // Pixel i is inside when an odd number of the polygon's crossings lie
-    // at columns <= i: the even-odd rule of the span walk, whose spans
-    // start at these columns. So: the pixels between consecutive pairs.
-    std::sort(columns_.begin(), columns_.end());
-    for (std::size_t m = 0; m < columns_.size(); m += 2)
-      shade_shadow(polygon, columns_[m], m + 1 < columns_.size() ? columns_[m + 1] : width, j);
+    k = end;
   }
-  count_groups(j);
-  flag_near_edges(j);
-  flag_degenerate(j);
+  count_groups();
+  flag_near_edges();
+  for (int j = band0_; j < band1_; ++j) flag_degenerate(j);
 }
 
 /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
@@ -110,22 +124,21 @@ void Band::shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
     if (shadow.group < 0)
       result_.count[p * scene_.lights + shadow.light] += shadow.weight;
     else
-      group_hits_.push_back({static_cast<std::uint32_t>(i), polygon});
+      group_hits_.push_back({p, polygon});
   }
 }
 
-/// Twisted polygons crossed in front of the visible point, per pixel: each
-/// group whose flag ends other than it started (an odd number of its
-/// polygons crossed) changes its light's count by one, +1 where the flag is
-/// set at the hit, -1 where it is cleared.
-void Band::count_groups(int j) {
+/// Twisted polygons crossed in front of the visible point, per pixel of the
+/// band: each group whose flag ends other than it started (an odd number of
+/// its polygons crossed) changes its light's count by one, +1 where the
+/// flag is set at the hit, -1 where it is cleared.
+void Band::count_groups() {
   std::sort(group_hits_.begin(), group_hits_.end());
   for (std::size_t k = 0; k < group_hits_.size();) {
-    const std::uint32_t i = group_hits_[k].first;
+    const std::size_t p = group_hits_[k].first;
     std::size_t end = k;
-    for (; end < group_hits_.size() && group_hits_[end].first == i; ++end)
+    for (; end < group_hits_.size() && group_hits_[end].first == p; ++end)
       flags_[static_cast<std::size_t>(scene_.polygons[group_hits_[end].second].group)] ^= 1;
-    const std::size_t p = pixel(static_cast<int>(i), j);
     for (; k < end; ++k) {
       const ProjectedPolygon& t = scene_.polygons[group_hits_[k].second];
       const auto g = static_cast<std::size_t>(t.group);
