@@ -219,7 +219,6 @@ bool Band::behind_in_band(std::uint32_t polygon) {
 bool Band::behind_band(std::uint32_t index) const {
   const ProjectedPolygon& polygon = scene_.polygons[index];
   const CameraSpace& camera = scene_.camera;
-  const geometry::CameraFrame& frame = camera.frame;
   const DepthFloor& whole = scene_.floors[index];
   if (whole.i0 > whole.i1) return true;  // no pixel centre in the image
   if (whole.floor > band_depth_bound(whole.i0, whole.i1) + 1e-9 * camera.z_near) return true;
