@@ -3,8 +3,9 @@
 //   1. every polygon goes to camera space, is clipped at z = z_near and
 //      projected; a y bucket sort of the edges by their first scanline
 //      (scanline_scene.cpp, projected_polygon.cpp);
-//   2. rows go to workers in chunks, each a series of bands of 8 rows
-//      (scanline_band.cpp); active lists kept by scanline coherence carry
+//   2. rows go to workers in bands of 8 rows, each worker mostly down its
+//      own run of bands (band_scheduler.h, scanline_band.cpp); active lists
+//      kept by scanline coherence carry
 //      each edge's hot data inline, since with many lights tens of
 //      thousands of shadow edges cross every row;
 //   3. a band's surfaces first (scanline_surfaces.cpp): crossings x-sorted
@@ -21,12 +22,12 @@
 //      it lies in front of the visible point.
 // Every pixel that a floating-point decision could have got wrong is flagged
 // `uncertain` (scanline_flags.cpp); the bounds are stated where they are used.
+#include <raster/band_scheduler.h>
 #include <raster/parallel_rows.h>
 #include <raster/scanline.h>
 #include <raster/scanline_band.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -62,33 +63,32 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   result.uncertain.resize(pixels);
   result.light_mask.resize(pixels);
 
-  // Rows go out in chunks to whichever worker is free: the work per row
-  // varies tenfold (a mesh in one part of the picture, its shadow polygons
-  // crossing some rows only), so a fixed split into one band per thread left
-  // a thread idle for much of the frame. Each chunk restarts its active lists
-  // from the y buckets, which costs one pass over the edges started above it:
-  // eight chunks per thread keeps that small.
+  // Bands of rows go out to the workers one at a time (band_scheduler.h):
+  // the work per row varies tenfold (a mesh in one part of the picture, its
+  // shadow polygons crossing some rows only), so a fixed split into one
+  // range per thread left a thread idle for much of the frame; and a worker
+  // goes on down its own run of bands, carrying its active lists from one
+  // band to the next, so it restarts them from the y buckets (one pass over
+  // the edges started above, read out of order) about once, not per band.
   const int workers =
       static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
   constexpr int kBand = detail::Band::kBandRows;
-  const int rows_per_chunk =
-      ((frame.height + 8 * workers - 1) / (8 * workers) + kBand - 1) / kBand * kBand;
-  const int chunks = (frame.height + rows_per_chunk - 1) / rows_per_chunk;
-  // Each row is computed from the shared read-only scene alone, and chunks
-  // are whole bands (bands start at multiples of kBandRows whatever the
-  // thread count), so neither the chunks nor which worker takes them can
-  // change any value: results, shadow_bands_skipped included, are identical
-  // for any thread count.
+  const int bands = (frame.height + kBand - 1) / kBand;
+  // Each row is computed from the shared read-only scene alone, and bands
+  // start at multiples of kBandRows whatever the thread count, so neither
+  // the schedule nor which worker takes a band can change any value:
+  // results, shadow_bands_skipped included, are identical for any thread
+  // count.
   std::vector<std::uint64_t> spans(static_cast<std::size_t>(workers), 0);
   std::vector<std::uint64_t> skipped(static_cast<std::size_t>(workers), 0);
   // One item per worker, each with its own Band (active lists, per-polygon
-  // state) taking chunks from the shared counter; parallel_rows rethrows a
+  // state) taking bands from the scheduler; parallel_rows rethrows a
   // worker's exception here.
-  std::atomic<int> next{0};
+  BandScheduler schedule(bands, workers);
   parallel_rows(workers, static_cast<unsigned>(workers), [&](int w) {
     detail::Band band(scene, result, progress);
-    for (int c = next++; c < chunks; c = next++)
-      band.run(c * rows_per_chunk, std::min(frame.height, (c + 1) * rows_per_chunk));
+    for (int b = schedule.next(w); b >= 0; b = schedule.next(w))
+      band.run(b * kBand, std::min(frame.height, (b + 1) * kBand));
     spans[static_cast<std::size_t>(w)] = band.spans();
     skipped[static_cast<std::size_t>(w)] = band.shadow_bands_skipped();
   });

@@ -8,30 +8,39 @@
 namespace umbra::raster::detail {
 
 /// Rows [row0, row1). A worker may run several such chunks one after the
-/// other; each starts its active lists afresh.
+/// other; a chunk that starts where its previous one ended carries its
+/// active lists on, any other starts them afresh.
 void Band::run(int row0, int row1) {
   const int width = scene_.camera.frame.width;
   const std::size_t band_pixels = static_cast<std::size_t>(kBandRows) * width;
   ray_.resize(band_pixels);
   ray_length_.resize(band_pixels);
   visible_error_.resize(band_pixels);
-  crossings_.clear();
-  shadow_edges_.clear();
-  strips_.clear();
-  // Start the lists at row0: every edge active there, every strip that
-  // meets it. The shadow pass takes the buckets of later rows a band at a
-  // time (start_shadow_band), the surface pass row by row.
-  for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
-    if (scene_.by_scan_row_last[k] < row0) continue;
-    if (scene_.by_scan_row_shadow[k])
-      shadow_edges_.push_back(make_shadow_edge(k));
-    else
-      activate(k);
+  const bool carry_on = row0 == next_row_;
+  if (!carry_on) {
+    crossings_.clear();
+    shadow_edges_.clear();
+    strips_.clear();
+    // Start the lists at row0: every edge active there, every strip that
+    // meets it. The shadow pass takes the buckets of later rows a band at a
+    // time (start_shadow_band), the surface pass row by row. With many
+    // lights this is tens of thousands of edges, each read from the edge
+    // table out of order: the scheduler (scanline.cpp) keeps restarts few.
+    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
+      if (scene_.by_scan_row_last[k] < row0) continue;
+      if (scene_.by_scan_row_shadow[k])
+        shadow_edges_.push_back(make_shadow_edge(k));
+      else
+        activate(k);
+    }
+    std::sort(shadow_edges_.begin(), shadow_edges_.end(), by_edge);
+    for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k)
+      if (scene_.by_near_row_last[k] >= row0) strips_.push_back(make_strip(k));
+    taken_ = row0 + 1;
   }
-  std::sort(shadow_edges_.begin(), shadow_edges_.end(), by_edge);
-  for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k)
-    if (scene_.by_near_row_last[k] >= row0) strips_.push_back(make_strip(k));
-  taken_ = row0 + 1;
+  // Lists carried on hold what the last chunk left at its end, row0 - 1:
+  // row0's own bucket is still to take, as on any later row.
+  const int fresh_row = carry_on ? -1 : row0;
   for (int b0 = row0; b0 < row1; b0 += kBandRows) {
     band0_ = b0;
     band1_ = std::min(row1, b0 + kBandRows);
@@ -42,8 +51,8 @@ void Band::run(int row0, int row1) {
       // Edges carried over from the previous row stay nearly sorted; the
       // row's new edges are sorted apart and merged in (appending them to
       // an insertion sort would move each across the whole list).
-      const std::size_t carried = j > row0 ? crossings_.size() : 0;
-      if (j > row0)
+      const std::size_t carried = j != fresh_row ? crossings_.size() : 0;
+      if (j != fresh_row)
         for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
           if (!scene_.by_scan_row_shadow[k]) activate(k);
       scan_row(j, carried);
@@ -56,6 +65,7 @@ void Band::run(int row0, int row1) {
     if (progress_)
       for (int j = b0; j < band1_; ++j) progress_->advance();
   }
+  next_row_ = row1;
 }
 
 /// The surface edge at place k of the y bucket sort enters the active list.

@@ -56,7 +56,7 @@ class Band {
   std::uint64_t shadow_bands_skipped() const { return skipped_; }
 
   /// Rows [row0, row1). A worker may run several such chunks one after the
-  /// other; each starts its active lists afresh.
+  /// other; one that starts where the last ended carries the active lists on.
   void run(int row0, int row1);
 
  private:
@@ -207,6 +207,7 @@ class Band {
   std::vector<ShadowEdge> shadow_edges_;  // shadow edges active in the band, in edge order
   std::vector<ShadowEdge> live_;          // those of polygons not behind the band
   int taken_ = 0;                         // bucket rows below this are in the lists
+  int next_row_ = -1;                     // where the last chunk ended (-1: none yet)
   std::vector<int> columns_;              // one shadow polygon's crossing columns on the row
   std::vector<NearStrip> strips_;         // strips that meet the band
   std::vector<NearStrip> band_strips_;    // those not of a shadow polygon behind the band
