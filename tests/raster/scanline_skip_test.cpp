@@ -1,7 +1,7 @@
 // The scanline's band skipping (Bergeron's saving: a shadow polygon behind
 // every visible point round it in a band of rows is not scanned there) only
 // saves work: with it on or off, every visible id, depth, count, uncertain
-// flag and span is the same, on scenes with real shadow volumes.
+// flag (and light mask) and span is the same, on scenes with real shadow volumes.
 #include <geometry/eye_start.h>
 #include <geometry/scene_index.h>
 #include <geometry/scene_io.h>
@@ -50,6 +50,7 @@ void expect_same(const ScanlineResult& a, const ScanlineResult& b, const std::st
   std::size_t differ = 0;
   for (std::size_t p = 0; p < a.visible.size(); ++p)
     differ += a.visible[p] != b.visible[p] || a.uncertain[p] != b.uncertain[p] ||
+              a.light_mask[p] != b.light_mask[p] ||
               !(a.depth[p] == b.depth[p] || (a.depth[p] != a.depth[p] && b.depth[p] != b.depth[p]));
   for (std::size_t k = 0; k < a.count.size(); ++k) differ += a.count[k] != b.count[k];
   EXPECT_EQ(differ, 0u) << name;

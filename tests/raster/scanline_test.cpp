@@ -333,6 +333,7 @@ TEST(Scanline, ResultsAreIdenticalForAnyThreadCount) {
     EXPECT_EQ(r.depth, r1.depth) << threads;
     EXPECT_EQ(r.count, r1.count) << threads;
     EXPECT_EQ(r.uncertain, r1.uncertain) << threads;
+    EXPECT_EQ(r.light_mask, r1.light_mask) << threads;
   }
 }
 
