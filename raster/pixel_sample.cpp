@@ -26,7 +26,11 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
   // Shade the side the eye sees: the sample point lies on the eye's side.
   const Vec3 normal =
       geometry::dot(sample.normal, ray.direction) > 0 ? -sample.normal : sample.normal;
-  std::vector<bool> lit(sample.classes.size());
+  // One buffer per thread, reused pixel after pixel: every method stores
+  // every pixel through here, and a vector made per call was a heap
+  // allocation per pixel.
+  thread_local std::vector<bool> lit;
+  lit.assign(sample.classes.size(), false);
   for (std::size_t i = 0; i < lit.size(); ++i) {
     lit[i] = sample.classes[i] == ShadowClass::lit;
     frame.shadow[i][pixel] = shadow_value(sample.classes[i]);
