@@ -102,6 +102,12 @@ Sign orientation_at_hit(const Vec3& a, const HPoint& b, const HPoint& c, const S
 
 Sign fan_orientation(std::span<const Vec3> polygon, const HPoint& x) {
   if (polygon.size() < 3) return Sign::zero;
+  // A triangle's fan is the one determinant det(v1 − v0, v2 − v0, x − v0),
+  // orientation's own: for a point light that is CGAL's statically filtered
+  // predicate, several times faster than intervals under a rounding-mode
+  // switch. Meshes are mostly triangles, and every light asks each one.
+  if (polygon.size() == 3)
+    return orientation(polygon[0], HPoint::point(polygon[1]), HPoint::point(polygon[2]), x);
   return filtered_sign([&](auto tag) {
     using NT = typename decltype(tag)::type;
     const Vec3& v0 = polygon[0];

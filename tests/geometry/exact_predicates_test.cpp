@@ -119,6 +119,40 @@ TEST(FanOrientation, LightInTheFacePlaneIsZeroAndSidesHaveOppositeSigns) {
   EXPECT_EQ(fan_orientation(line, HPoint::point({0, 5, 0})), Sign::zero);
 }
 
+Sign reference_fan(const std::vector<Vec3>& polygon, const HPoint& x) {
+  const QV v0 = q(polygon[0]);
+  Q sum = 0;
+  for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+    sum += det(q(polygon[k]) - v0, q(polygon[k + 1]) - v0, slot(x, v0));
+  return sign_of(sum);
+}
+
+// Triangles take the statically filtered orientation, larger fans the
+// interval sum: both must equal rational arithmetic, lights at infinity
+// and in the plane included.
+TEST(FanOrientation, EqualsRationalArithmeticForTrianglesAndLargerFans) {
+  Generator gen(4711);
+  int zeros = 0, triangles = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double s = gen.scale();
+    const bool lattice = i % 3 != 0;
+    std::vector<Vec3> polygon(3 + static_cast<std::size_t>(i % 4 == 0) + (i % 8 == 0));
+    for (Vec3& v : polygon) v = gen.point(s, lattice);
+    HPoint x = HPoint::point(gen.point(s, lattice));
+    if (i % 5 == 1) x.finite = false;
+    // Some lights exactly in a triangle's plane: an affine combination
+    // with dyadic weights, exact in doubles on the lattice.
+    if (lattice && polygon.size() == 3 && i % 7 == 3)
+      x = HPoint::point(polygon[0] + 2.0 * (polygon[1] - polygon[0]) - (polygon[2] - polygon[0]));
+    const Sign expected = reference_fan(polygon, x);
+    ASSERT_EQ(fan_orientation(polygon, x), expected) << "case " << i;
+    zeros += expected == Sign::zero;
+    triangles += polygon.size() == 3;
+  }
+  EXPECT_GT(zeros, 500);
+  EXPECT_GT(triangles, 10000);
+}
+
 TEST(RayParameters, CompareExactlyEvenWhenEqual) {
   const Vec3 eye{0, 0, 0}, d{0.125, 0.25, 0.375};
   // Two different planes through the same point 8·d.
