@@ -53,4 +53,17 @@ struct HugePageAllocator {
 /// One channel of a frame: a float per pixel (three for the beauty pass).
 using PixelPlane = std::vector<float, HugePageAllocator<float>>;
 
+template <class T>
+using HugeVector = std::vector<T, HugePageAllocator<T>>;
+
+/// Room for n elements in huge pages, however small n is: for a worker's
+/// lists, which are made afresh every frame and would otherwise fault in
+/// 4 KiB page by page, or move as they grow. The mapping is only backed
+/// where it is touched, so an upper bound costs address space, not memory.
+template <class T>
+void reserve_huge(HugeVector<T>& v, std::size_t n) {
+  const std::size_t one_page = (kHugePageMinBytes + sizeof(T) - 1) / sizeof(T);
+  v.reserve(n > one_page ? n : one_page);
+}
+
 }  // namespace umbra::raster

@@ -37,15 +37,28 @@ inline bool before(const DepthEntry& a, const DepthEntry& b) {
 /// One worker's scanlines, with its own active edge lists.
 class Band {
  public:
+  /// Each worker makes its Band afresh every frame, so its lists and
+  /// per-polygon arrays take huge pages (huge_pages.h), the lists room for
+  /// every edge at once: they never move as they grow, and fault in 2 MiB at
+  /// a time. With 4 KiB pages, the moves and faults were a tenth of a
+  /// 16-light frame on this machine kind.
   Band(const Scene& scene, ScanlineResult& result, Progress* progress)
-      : scene_(scene),
-        result_(result),
-        progress_(progress),
-        inside_(scene.polygons.size(), 0),
-        slot_(scene.polygons.size(), 0),
-        flags_(scene.group_start),
-        cull_band_(scene.polygons.size(), -1),
-        culled_(scene.polygons.size(), 0) {}
+      : scene_(scene), result_(result), progress_(progress), flags_(scene.group_start) {
+    const std::size_t polygons = scene.polygons.size();
+    reserve_huge(inside_, polygons);
+    inside_.assign(polygons, 0);
+    reserve_huge(slot_, polygons);
+    slot_.assign(polygons, 0);
+    reserve_huge(cull_band_, polygons);
+    cull_band_.assign(polygons, -1);
+    reserve_huge(culled_, polygons);
+    culled_.assign(polygons, 0);
+    reserve_huge(crossings_, scene.by_scan_row.size());
+    reserve_huge(shadow_edges_, scene.by_scan_row.size());
+    reserve_huge(live_, scene.by_scan_row.size());
+    reserve_huge(strips_, scene.by_near_row.size());
+    reserve_huge(band_strips_, scene.by_near_row.size());
+  }
 
   /// Rows go through the surface pass and the shadow pass a band of this
   /// many rows at a time, so that a shadow polygon can be dismissed for a
@@ -201,31 +214,31 @@ class Band {
   const Scene& scene_;
   ScanlineResult& result_;
   Progress* progress_;
-  std::uint64_t spans_ = 0;               // spans shaded by this worker
-  std::uint64_t skipped_ = 0;             // (polygon, band) pairs it found behind
-  std::vector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
-  std::vector<ShadowEdge> shadow_edges_;  // shadow edges active in the band, in edge order
-  std::vector<ShadowEdge> live_;          // those of polygons not behind the band
-  int taken_ = 0;                         // bucket rows below this are in the lists
-  int next_row_ = -1;                     // where the last chunk ended (-1: none yet)
-  std::vector<int> columns_;              // one shadow polygon's crossing columns on the row
-  std::vector<NearStrip> strips_;         // strips that meet the band
-  std::vector<NearStrip> band_strips_;    // those not of a shadow polygon behind the band
-  std::vector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
-  std::vector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
-  std::vector<std::uint32_t> surfaces_;   // surfaces inside at the current span
-  std::vector<DepthEntry> order_;         // the span's depth-ordered list
-  std::vector<Vec3> ray_;              // the band's sample directions in camera space, row by row
-  std::vector<double> ray_length_;     // their lengths
-  std::vector<double> visible_error_;  // depth error bound of each pixel's visible hit
-  std::vector<std::uint8_t> flags_;    // per twisted group: its flag along the current ray
-  int band0_ = 0, band1_ = 0;          // the current band's rows [band0_, band1_)
-  std::size_t row_base_ = 0;           // the current row's place in ray_ and the like
+  std::uint64_t spans_ = 0;              // spans shaded by this worker
+  std::uint64_t skipped_ = 0;            // (polygon, band) pairs it found behind
+  HugeVector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
+  HugeVector<ShadowEdge> shadow_edges_;  // shadow edges active in the band, in edge order
+  HugeVector<ShadowEdge> live_;          // those of polygons not behind the band
+  int taken_ = 0;                        // bucket rows below this are in the lists
+  int next_row_ = -1;                    // where the last chunk ended (-1: none yet)
+  std::vector<int> columns_;             // one shadow polygon's crossing columns on the row
+  HugeVector<NearStrip> strips_;         // strips that meet the band
+  HugeVector<NearStrip> band_strips_;    // those not of a shadow polygon behind the band
+  HugeVector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
+  HugeVector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
+  std::vector<std::uint32_t> surfaces_;  // surfaces inside at the current span
+  std::vector<DepthEntry> order_;        // the span's depth-ordered list
+  std::vector<Vec3> ray_;                // the band's sample directions in camera space, row by row
+  std::vector<double> ray_length_;       // their lengths
+  std::vector<double> visible_error_;    // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;      // per twisted group: its flag along the current ray
+  int band0_ = 0, band1_ = 0;            // the current band's rows [band0_, band1_)
+  std::size_t row_base_ = 0;             // the current row's place in ray_ and the like
   // depth_bound_[k][i]: the largest bound on an exact visible depth in the
   // band's columns [i, i + 2^k) (-infinity where nothing is seen).
   std::vector<std::vector<double>> depth_bound_;
-  std::vector<int> cull_band_;        // per polygon: first row of the band last judged, or -1
-  std::vector<std::uint8_t> culled_;  // per polygon: behind in that band
+  HugeVector<int> cull_band_;        // per polygon: first row of the band last judged, or -1
+  HugeVector<std::uint8_t> culled_;  // per polygon: behind in that band
   // (pixel, polygon): twisted shadow polygons crossed in front of the visible point in the band
   std::vector<std::pair<std::size_t, std::uint32_t>> group_hits_;
 };

@@ -58,5 +58,23 @@ TEST(HugePages, UninitializedVectorsUseThemToo) {
   EXPECT_EQ(masks.back(), 7u);
 }
 
+TEST(HugePages, ReserveHugeGivesSmallListsAWholeAlignedPageThatNeverMoves) {
+  // A worker's per-polygon array: 134k bytes, far below the threshold.
+  HugeVector<std::uint8_t> flags;
+  reserve_huge(flags, 134000);
+  EXPECT_GE(flags.capacity() * sizeof(std::uint8_t), kHugePageMinBytes);
+  EXPECT_EQ(address(flags.data()) % kTwoMiB, 0u);
+  flags.assign(134000, 3);
+  EXPECT_EQ(flags.back(), 3);
+  // An upper bound reserved up front: growing to it never moves the list.
+  HugeVector<std::uint64_t> list;
+  reserve_huge(list, 1 << 19);  // 4 MiB
+  EXPECT_GE(list.capacity(), std::size_t{1} << 19);
+  const std::uint64_t* first = list.data();
+  for (std::uint64_t k = 0; k < (1 << 19); ++k) list.push_back(k);
+  EXPECT_EQ(list.data(), first);
+  EXPECT_EQ(list[(1 << 19) - 1], (1u << 19) - 1);
+}
+
 }  // namespace
 }  // namespace umbra::raster
