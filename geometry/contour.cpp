@@ -78,7 +78,10 @@ std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
 }
 
 EdgeTopology edge_topology(const Model& model) {
-  const EdgeTable edges = edge_table(model);
+  return edge_topology(edge_table(model), model_surfaces(model));
+}
+
+EdgeTopology edge_topology(const EdgeTable& edges, std::span<const PolygonSurface> surfaces) {
   EdgeTopology t;
   t.edges = edges.edges.size();
   for (std::size_t e = 0; e < edges.edges.size(); ++e) {
@@ -90,9 +93,8 @@ EdgeTopology edge_topology(const Model& model) {
     else
       ++t.non_manifold_edges;
   }
-  for (const Polygon& p : model.polygons)
-    if (polygon_surface(model.vertices, p).shape == PolygonShape::degenerate)
-      ++t.degenerate_polygons;
+  for (const PolygonSurface& s : surfaces)
+    if (s.shape == PolygonShape::degenerate) ++t.degenerate_polygons;
   return t;
 }
 

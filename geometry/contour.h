@@ -81,5 +81,7 @@ struct EdgeTopology {
   std::uint64_t degenerate_polygons = 0;  ///< all vertices on one line
 };
 EdgeTopology edge_topology(const Model& model);
+/// The same from the model's edge table and surfaces (model_tables.h).
+EdgeTopology edge_topology(const EdgeTable& edges, std::span<const PolygonSurface> surfaces);
 
 }  // namespace umbra::geometry

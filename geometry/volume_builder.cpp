@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace umbra::geometry {
 namespace {
@@ -107,9 +109,8 @@ class ModelVolume {
 struct SceneShare {
   const Scene& scene;
   Box bounds;
-  /// Per model; empty where it casts no shadows.
-  std::vector<std::vector<PolygonSurface>> surfaces;
-  std::vector<EdgeTable> edges;
+  /// Per model (model_tables.h); may be empty where it casts no shadows.
+  std::span<const ModelTables> tables;
 };
 
 /// Light li's volumes, for every shadow-casting model in model order; each
@@ -133,16 +134,17 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
       stats.crow_all_edges_polygons += p.size();
       stats.crow_bytes += p.size() * polygon_bytes(4);
     }
-    const std::vector<PolygonRole> roles = polygon_roles(model, share.surfaces[mi], lp);
+    const ModelTables& tables = share.tables[mi];
+    const std::vector<PolygonRole> roles = polygon_roles(model, tables.surfaces, lp);
     std::vector<std::uint32_t> casting;
     for (std::uint32_t p = 0; p < roles.size(); ++p)
       if (roles[p].facing != 0) casting.push_back(p);
     if (casting.empty()) continue;
-    const std::vector<ContourEdge> contour = contour_edges(share.edges[mi], roles);
+    const std::vector<ContourEdge> contour = contour_edges(tables.edges, roles);
 
     double distance = 0;
     if (light.type == LightType::point) {
-      distance = distance_lower_bound(model, share.surfaces[mi], casting, light.position);
+      distance = distance_lower_bound(model, tables.surfaces, casting, light.position);
       if (light.light_end && distance > *light.light_end) {
         // Wholly outside the sphere: everything it could shadow is out of range.
         ++stats.culled_models;
@@ -202,14 +204,16 @@ void append_light_volume(LightVolume light, ShadowVolumes& volumes) {
 }  // namespace
 
 ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options) {
-  SceneShare share{scene, scene_bounds(scene), {}, {}};
-  share.surfaces.resize(scene.models.size());
-  share.edges.resize(scene.models.size());
-  parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
-    if (!scene.models[mi].casts_shadows) return;
-    share.surfaces[mi] = model_surfaces(scene.models[mi]);
-    share.edges[mi] = edge_table(scene.models[mi]);
-  });
+  return build_shadow_volumes(scene, model_tables(scene, options.threads, true), options);
+}
+
+ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTables> tables,
+                                   const VolumeOptions& options) {
+  if (tables.size() != scene.models.size())
+    throw std::invalid_argument("build_shadow_volumes: " + std::to_string(tables.size()) +
+                                " model tables for " + std::to_string(scene.models.size()) +
+                                " models");
+  const SceneShare share{scene, scene_bounds(scene), tables};
 
   // The lights are independent: each builds its own part on some thread;
   // the parts are then put together in light order, as one pass would.

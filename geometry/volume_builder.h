@@ -2,8 +2,11 @@
 // Shadow volumes from contour edges (Crow), closed and generalised as
 // Bergeron describes: open and non-manifold models, L-twisted polygons,
 // caps, spheres of influence.
+#include <geometry/model_tables.h>
 #include <geometry/scene.h>
 #include <geometry/shadow_volume.h>
+
+#include <span>
 
 namespace umbra::geometry {
 
@@ -30,5 +33,12 @@ struct VolumeOptions {
 /// Polygons come light by light, in light order, then model by model; groups
 /// are numbered in that order. Only stats[i].seconds varies between runs.
 ShadowVolumes build_shadow_volumes(const Scene& scene, const VolumeOptions& options = {});
+
+/// The same from the models' tables already at hand (model_tables(scene,
+/// ...), at least those of the models that cast shadows), as when a render
+/// has made them for its statistics. Throws std::invalid_argument unless
+/// there is one per model.
+ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTables> tables,
+                                   const VolumeOptions& options = {});
 
 }  // namespace umbra::geometry

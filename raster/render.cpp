@@ -1,4 +1,5 @@
 #include <geometry/contour.h>
+#include <geometry/model_tables.h>
 #include <geometry/scene_index.h>
 #include <raster/render.h>
 #include <raster/render_methods.h>
@@ -31,8 +32,11 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
   RenderStats local;
   RenderStats& s = stats ? *stats : local;
   s = RenderStats{};
-  for (const geometry::Model& model : scene.models) {
-    const geometry::EdgeTopology t = geometry::edge_topology(model);
+  // Every method reports the models' edge topology, and the volume method
+  // builds every light's volume from the same tables: made once.
+  const std::vector<geometry::ModelTables> tables = geometry::model_tables(scene, options.threads);
+  for (const geometry::ModelTables& model : tables) {
+    const geometry::EdgeTopology t = geometry::edge_topology(model.edges, model.surfaces);
     s.boundary_edges += t.boundary_edges;
     s.non_manifold_edges += t.non_manifold_edges;
     s.degenerate_polygons += t.degenerate_polygons;
@@ -45,13 +49,13 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
     case Method::exact:
       return render_exact(index, options, s);
     case Method::volume:
-      return render_volume(index, options, s);
+      return render_volume(index, tables, options, s);
     case Method::map:
       return render_map(index, options, s);
     case Method::ray:
       return render_ray(index, options, s);
   }
-  return render_volume(index, options, s);
+  return render_volume(index, tables, options, s);
 }
 
 }  // namespace umbra::raster

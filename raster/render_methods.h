@@ -1,8 +1,11 @@
 #pragma once
 // The render methods behind raster::render (render.h), one file each.
+#include <geometry/model_tables.h>
 #include <geometry/scene_index.h>
 #include <raster/frame.h>
 #include <raster/render.h>
+
+#include <span>
 
 namespace umbra::raster {
 
@@ -14,8 +17,11 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
 /// Shadow volumes from contour edges through the scanline depth count, with
 /// every pixel the scanline cannot decide in floating point decided again
 /// exactly (visible_surface.h, volume_crossings.h, and the oracle where even
-/// the exact volume count meets a degenerate configuration).
-Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& options,
+/// the exact volume count meets a degenerate configuration). `tables` are
+/// the scene's models' (geometry::model_tables), which render() has made
+/// for its statistics.
+Frame render_volume(const geometry::SceneIndex& index,
+                    std::span<const geometry::ModelTables> tables, const RenderOptions& options,
                     RenderStats& stats);
 
 /// Williams' shadow maps: the visible surface as Method::volume finds it

@@ -54,7 +54,8 @@ ShadowClass class_of_count(int count, std::size_t pixel, std::uint32_t light) {
 
 }  // namespace
 
-Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& options,
+Frame render_volume(const geometry::SceneIndex& index,
+                    std::span<const geometry::ModelTables> tables, const RenderOptions& options,
                     RenderStats& stats) {
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
@@ -66,9 +67,9 @@ Frame render_volume(const geometry::SceneIndex& index, const RenderOptions& opti
   // No caps: an eye ray to its first hit crosses none (volume_builder.h).
   // Without shadows: no volume at all, every count starts and stays at 0.
   const geometry::ShadowVolumes volumes =
-      options.shadows
-          ? geometry::build_shadow_volumes(scene, {.caps = false, .threads = options.threads})
-          : geometry::ShadowVolumes{};
+      options.shadows ? geometry::build_shadow_volumes(scene, tables,
+                                                       {.caps = false, .threads = options.threads})
+                      : geometry::ShadowVolumes{};
   geometry::EyeStart eye;
   if (options.shadows) {
     eye = geometry::eye_start(index, volumes, options.threads);

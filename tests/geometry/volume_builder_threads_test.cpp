@@ -6,6 +6,8 @@
 
 #include <bit>
 #include <cstdint>
+#include <span>
+#include <stdexcept>
 #include <tuple>
 
 #include "many_light_scenes.h"
@@ -101,6 +103,37 @@ TEST(VolumeBuilderThreads, AnyThreadCountGivesTheOneThreadVolumes) {
   }
   // Bergeron's two figures and the cloud, with caps and without.
   EXPECT_EQ(with_groups, 6);
+}
+
+// A render makes the models' tables once for its statistics and hands them
+// to the builder: the volumes must be those the builder makes on its own.
+TEST(VolumeBuilderThreads, TablesMadeBeforehandGiveTheSameVolumes) {
+  for (const auto& [name, scene] : testing_scenes::many_light_scenes()) {
+    SCOPED_TRACE(name);
+    const std::vector<ModelTables> all = model_tables(scene, 2);
+    const std::vector<ModelTables> casting = model_tables(scene, 3, true);
+    ASSERT_EQ(all.size(), scene.models.size());
+    for (const bool caps : {true, false}) {
+      const ShadowVolumes own = build_shadow_volumes(scene, {.caps = caps, .threads = 2});
+      expect_same_volumes(own, build_shadow_volumes(scene, all, {.caps = caps, .threads = 2}));
+      expect_same_volumes(own, build_shadow_volumes(scene, casting, {.caps = caps, .threads = 1}));
+    }
+  }
+}
+
+TEST(VolumeBuilderThreads, ModelTablesSkipModelsThatCastNothingOnlyWhenAsked) {
+  Scene scene = testing_scenes::quad_cloud();
+  ASSERT_FALSE(scene.models.empty());
+  scene.models[0].casts_shadows = false;
+  const std::vector<ModelTables> casting = model_tables(scene, 2, true);
+  EXPECT_TRUE(casting[0].surfaces.empty());
+  EXPECT_TRUE(casting[0].edges.edges.empty());
+  const std::vector<ModelTables> all = model_tables(scene, 2);
+  EXPECT_EQ(all[0].surfaces.size(), scene.models[0].polygons.size());
+  EXPECT_FALSE(all[0].edges.edges.empty());
+  // One table per model, or the builder refuses them.
+  EXPECT_THROW(build_shadow_volumes(scene, std::span(all).first(all.size() - 1)),
+               std::invalid_argument);
 }
 
 TEST(VolumeBuilderThreads, TwistedGroupsOfLaterLightsAreShiftedPastEarlierOnes) {
