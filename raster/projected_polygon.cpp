@@ -77,7 +77,7 @@ double ProjectedPolygon::depth_error(const Vec3& d_cam, double t) const {
 }
 
 ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t index,
-                                 const CameraSpace& camera) {
+                                 const CameraSpace& camera, std::span<ProjectedEdge> room) {
   const geometry::CameraFrame& frame = camera.frame;
   ProjectedPolygon out;
   out.kind = polygon.kind;
@@ -203,7 +203,7 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   }
   if (out.status != ProjectedPolygon::Status::active) return out;
 
-  out.edges.reserve(m);
+  if (room.size() < m) throw std::logic_error("project_polygon: no room for the clipped edges");
   for (std::size_t k = 0; k < m; ++k) {
     const std::size_t k1 = (k + 1) % m;
     ProjectedEdge e;
@@ -224,8 +224,9 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
     e.err_a = perr[k];
     e.err_b = perr[k1];
     e.polygon = index;
-    out.edges.push_back(e);
+    room[k] = e;
   }
+  out.edges = room.first(m);
   return out;
 }
 

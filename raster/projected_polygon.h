@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace umbra::raster::detail {
@@ -96,7 +97,8 @@ struct ProjectedPolygon {
 
   double bbox_x0 = 0, bbox_y0 = 0, bbox_x1 = 0,
          bbox_y1 = 0;  ///< pixel bounding box of the clipped projection
-  std::vector<ProjectedEdge> edges;
+  /// In storage the caller lent project_polygon (Scene::edge_store).
+  std::span<const ProjectedEdge> edges;
 
   /// Ray parameter t at which eye + t·d meets the polygon's plane (d in camera space).
   double depth(const Vec3& d_cam) const { return n_dot_p0 / dot(n, d_cam); }
@@ -120,8 +122,15 @@ struct ProjectedPolygon {
   }
 };
 
-/// Prepares polygons[index]. Throws std::invalid_argument on non-finite vertices.
+/// Room for the edges of a polygon with this many vertices once clipped at
+/// the near plane: each edge that leaves the half-space adds one vertex, and
+/// at most half of them can.
+constexpr std::size_t edge_room(std::size_t vertices) { return vertices + vertices / 2; }
+
+/// Prepares polygons[index], its edges written to `room` (at least
+/// edge_room(polygon.vertices.size()) of them), which must outlive the
+/// result. Throws std::invalid_argument on non-finite vertices.
 ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t index,
-                                 const CameraSpace& camera);
+                                 const CameraSpace& camera, std::span<ProjectedEdge> room);
 
 }  // namespace umbra::raster::detail

@@ -21,12 +21,16 @@ RowRange active_rows(double y0, double y1, int height) {
 namespace {
 
 void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, int height,
-                 std::vector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
-                 std::vector<int>& last, std::vector<std::uint8_t>& shadow) {
+                 HugeVector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
+                 HugeVector<int>& last, HugeVector<std::uint8_t>& shadow) {
   bucket.assign(static_cast<std::size_t>(height) + 2, 0);
   for (const TableEdge& e : edges)
     if ((e.*range).first <= (e.*range).last) ++bucket[(e.*range).first + 1];
   for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
+  // Made afresh every frame, 1-2 MB each with many lights: whole huge pages.
+  reserve_huge(order, bucket[height]);
+  reserve_huge(last, bucket[height]);
+  reserve_huge(shadow, bucket[height]);
   order.assign(bucket[height], 0);
   std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
   for (std::uint32_t k = 0; k < edges.size(); ++k)
@@ -200,21 +204,32 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   const CameraSpace& camera = scene.camera;
   // With many lights there are 100k+ polygons to project and edges to
   // table: shared out, each written to its own slot.
+  HugeVector<std::size_t> room;
+  reserve_huge(room, input.size() + 1);
+  room.assign(input.size() + 1, 0);
+  for (std::size_t k = 0; k < input.size(); ++k)
+    room[k + 1] = room[k] + edge_room(input[k].vertices.size());
+  scene.edge_store.resize(room.back());
   scene.polygons.resize(input.size());
   parallel_blocks(input.size(), threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
-      scene.polygons[k] = project_polygon(input[k], static_cast<std::uint32_t>(k), camera);
+      scene.polygons[k] =
+          project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
+                          std::span(scene.edge_store).subspan(room[k], room[k + 1] - room[k]));
   });
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
   const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
-  std::vector<std::size_t> first_edge(scene.polygons.size() + 1, 0);
+  HugeVector<std::size_t> first_edge;
+  reserve_huge(first_edge, scene.polygons.size() + 1);
+  first_edge.assign(scene.polygons.size() + 1, 0);
   for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
     const ProjectedPolygon& polygon = scene.polygons[k];
     if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
     first_edge[k + 1] = first_edge[k] + polygon.edges.size();
   }
   scene.edges.resize(first_edge.back());
+  reserve_huge(scene.cullable, scene.polygons.size());
   scene.cullable.assign(scene.polygons.size(), 0);
   scene.floors.resize(scene.polygons.size());
   parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {

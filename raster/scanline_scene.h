@@ -63,35 +63,46 @@ struct TableEdge {
   double strip_x0, strip_slope, strip_half_width, strip_x_lo, strip_x_hi;
 };
 
-/// Everything the bands share, read-only once built.
+/// Everything the bands share, read-only once built. Not copied: polygons
+/// and the edge table point into edge_store (a move keeps them valid).
 struct Scene {
+  Scene() = default;
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+  Scene(Scene&&) = default;
+  Scene& operator=(Scene&&) = default;
+
   CameraSpace camera;
+  /// Every polygon's clipped edges, edge_room(vertices) places each, in
+  /// huge pages: one block instead of an allocation per polygon (100k+ with
+  /// many lights, their heap pages faulted in afresh every frame).
+  UninitializedVector<ProjectedEdge> edge_store;
   /// In huge pages (huge_pages.h): 176 bytes each, 24 MB with 16 lights,
   /// which in 4 KiB pages took about 90 ms of page faults a frame.
   std::vector<ProjectedPolygon, HugePageAllocator<ProjectedPolygon>> polygons;
   /// Filled in parallel by prepare; left uninitialized until then (a
   /// trivial type, so no serial zeroing of 100k+ entries first).
   UninitializedVector<TableEdge> edges;
-  std::vector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
+  HugeVector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
   std::vector<std::size_t>
       scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
   /// scan.last of by_scan_row's edges, in its order: a worker starting a
   /// chunk of rows reads these front to back to find the edges still active,
   /// instead of reaching into the edge table once per edge started above.
-  std::vector<int> by_scan_row_last;
-  std::vector<std::uint32_t> by_near_row;
+  HugeVector<int> by_scan_row_last;
+  HugeVector<std::uint32_t> by_near_row;
   std::vector<std::size_t> near_bucket;
-  std::vector<int> by_near_row_last;  ///< near.last of by_near_row's edges
+  HugeVector<int> by_near_row_last;  ///< near.last of by_near_row's edges
   /// 1 where by_scan_row's / by_near_row's edge belongs to a shadow polygon:
   /// the surface pass and the shadow pass take their own edges from the
   /// same buckets.
-  std::vector<std::uint8_t> by_scan_row_shadow, by_near_row_shadow;
+  HugeVector<std::uint8_t> by_scan_row_shadow, by_near_row_shadow;
   /// Per polygon: a shadow polygon whose depth may be bounded over a band
   /// of rows (band_cull); others are always scanned.
-  std::vector<std::uint8_t> cullable;
+  HugeVector<std::uint8_t> cullable;
   /// Per cullable polygon: its depth floor over its whole bounding box,
   /// widened by a pixel (Band::behind_band's first test).
-  std::vector<DepthFloor> floors;
+  HugeVector<DepthFloor> floors;
   /// Some entry of `cullable` is set (scanline_render sets it once the
   /// caller's choice is applied): otherwise no band needs a depth bound.
   bool any_cullable = false;

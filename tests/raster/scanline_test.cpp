@@ -281,6 +281,29 @@ TEST(Scanline, ShadowPolygonReachingBehindTheEyeCountsItsFrontPart) {
   EXPECT_GT(lit1, 50);
 }
 
+TEST(Scanline, PolygonCrossingTheNearPlaneAtEveryEdgeKeepsAllItsPieces) {
+  // A comb in the floor y = -1 whose six corners alternate in front of the
+  // eye (z = 0) and behind it (z > 5): clipped, it has 9 edges, the most a
+  // hexagon can get (edge_room(6)), and a shadow polygon like it counts too.
+  // (The last corner lies farther back so that the crossed comb has area.)
+  const CameraFrame frame = front_camera(32, 24);
+  const std::vector<Vec3> comb{{-3, -1, 0}, {-2, -1, 9}, {-1, -1, 0},
+                               {0, -1, 9},  {1, -1, 0},  {2, -1, 20}};
+  std::vector<Vec3> raised = comb;
+  for (Vec3& v : raised) v.y = -0.5;
+  const std::vector<RasterPolygon> polys{surface(comb, 4), shadow(raised, 0, 1)};
+  const ScanlineResult r = scanline_render(frame, polys, 1, 2);
+  const int uncertain = expect_matches_reference(frame, polys, 1, r);
+  EXPECT_LT(uncertain, 8);
+  int seen = 0, counted = 0;
+  for (std::size_t p = 0; p < r.visible.size(); ++p) {
+    seen += r.visible[p] == 4;
+    counted += r.count[p] != 0;
+  }
+  EXPECT_GT(seen, 60);  // the test is not vacuous
+  EXPECT_GT(counted, 20);
+}
+
 TEST(Scanline, ConcaveSurfaceCoverageIsEvenOdd) {
   const CameraFrame frame = front_camera(32, 32);
   const std::vector<RasterPolygon> polys{
