@@ -24,10 +24,13 @@ enum class ShadowPolygonType : std::uint8_t {
 /// which side the eye ray crosses.
 ///
 /// A side polygon (type 2) of edge (a, b) of a point light L has the
-/// vertices a, b, b', a' with x' = x + k·(x - L) for one k > 0 per model; its
-/// exact support is the plane through L, a and b, and decisions are taken
-/// on that ideal geometry (a, b, L, k), not on the rounded far vertices.
-/// For a directional light travelling along D, x' = x + k·D.
+/// vertices a, b, b', a' with x' = x + k·(x - L) for one k > 0 per model
+/// (FarEnds::past_reach), or with a k_x per far vertex that ends the side
+/// just past the scene's bounding box (FarEnds::leaving_bounds,
+/// volume_builder.h); its exact support is the plane through L, a and b,
+/// and decisions are taken on that ideal geometry (the wedge from a, b away
+/// from L), not on the rounded far vertices. For a directional light
+/// travelling along D, x' = x + k·D.
 struct ShadowPolygon {
   std::vector<Vec3> vertices;
   std::uint32_t light = 0;
@@ -82,7 +85,8 @@ struct ShadowVolumes {
   std::vector<VolumeStats> stats;       ///< one per light
   std::vector<TwistedPolygon> twisted;  ///< the In_Shadow flags' pairs
   /// [light][model]: the extrusion factor k of the model's volume for the
-  /// light (see ShadowPolygon); 0 where the model casts no volume for it
+  /// light (see ShadowPolygon; with FarEnds::leaving_bounds the most any of
+  /// its sides is extruded); 0 where the model casts no volume for it
   /// (casts_shadows false, or wholly outside the light's sphere).
   std::vector<std::vector<double>> extrusion;
 };

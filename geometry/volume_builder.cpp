@@ -7,21 +7,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 namespace umbra::geometry {
 namespace {
-
-Box scene_bounds(const Scene& scene) {
-  Box box;
-  for (const Model& m : scene.models)
-    for (const Vec3& v : m.vertices) box.extend(v);
-  box.extend(scene.camera.eye);
-  for (const Light& l : scene.lights)
-    if (l.type == LightType::point) box.extend(l.position);
-  return box;
-}
 
 std::uint64_t polygon_bytes(std::size_t vertices) {
   return sizeof(ShadowPolygon) + vertices * sizeof(Vec3);
@@ -39,13 +30,18 @@ struct LightVolume {
 /// Emits one model's volume for one light.
 class ModelVolume {
  public:
+  /// `bounds`, if given, is the box side polygons may end at as soon as they
+  /// have left it (FarEnds::leaving_bounds), `margin` past it.
   ModelVolume(const Model& model, const Light& light, std::uint32_t light_index,
-              std::uint32_t model_index, double k, LightVolume& out)
+              std::uint32_t model_index, double k, const Box* bounds, double margin,
+              LightVolume& out)
       : model_(model),
         light_(light),
         light_index_(light_index),
         model_index_(model_index),
         k_(k),
+        bounds_(bounds),
+        margin_(margin),
         out_(out),
         stats_(out.stats) {}
 
@@ -58,7 +54,12 @@ class ModelVolume {
             int nb_c, std::int32_t group) {
     const Vec3& a = model_.vertices[from];
     const Vec3& b = model_.vertices[to];
-    emit({a, b, extrude(b), extrude(a)}, polygon, edge, ShadowPolygonType::side, nb_c, group);
+    const std::optional<FarEdge> near_box =
+        bounds_ ? far_edge_leaving_box(light_, *bounds_, margin_, a, b, k_) : std::nullopt;
+    if (near_box)
+      emit({a, b, near_box->b, near_box->a}, polygon, edge, ShadowPolygonType::side, nb_c, group);
+    else
+      emit({a, b, extrude(b), extrude(a)}, polygon, edge, ShadowPolygonType::side, nb_c, group);
     ++stats_.side_polygons;
   }
 
@@ -99,6 +100,8 @@ class ModelVolume {
   const Light& light_;
   std::uint32_t light_index_, model_index_;
   double k_;
+  const Box* bounds_;
+  double margin_;
   LightVolume& out_;
   VolumeStats& stats_;
 };
@@ -109,6 +112,7 @@ class ModelVolume {
 struct SceneShare {
   const Scene& scene;
   Box bounds;
+  double margin = 0;  ///< far_end_margin(bounds)
   /// Per model (model_tables.h); may be empty where it casts no shadows.
   std::span<const ModelTables> tables;
 };
@@ -155,7 +159,9 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
     const double k = extrusion_factor(light, reach, distance);
     if (reach.limited) ++stats.truncated_models;
     out.extrusion[mi] = k;
-    ModelVolume volume(model, light, li, mi, k, out);
+    const bool leave_box = options.far_ends == FarEnds::leaving_bounds;
+    ModelVolume volume(model, light, li, mi, k, leave_box ? &share.bounds : nullptr, share.margin,
+                       out);
 
     for (const ContourEdge& e : contour) {
       volume.side(e.from, e.to, e.polygon, e.edge, e.weight, -1);
@@ -213,7 +219,12 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
     throw std::invalid_argument("build_shadow_volumes: " + std::to_string(tables.size()) +
                                 " model tables for " + std::to_string(scene.models.size()) +
                                 " models");
-  const SceneShare share{scene, scene_bounds(scene), tables};
+  if (options.caps && options.far_ends == FarEnds::leaving_bounds)
+    throw std::invalid_argument(
+        "build_shadow_volumes: far ends that leave the bounds need caps = false (the far caps "
+        "close a volume scaled about the light)");
+  const Box bounds = scene_bounds(scene);
+  const SceneShare share{scene, bounds, far_end_margin(bounds), tables};
 
   // The lights are independent: each builds its own part on some thread;
   // the parts are then put together in light order, as one pass would.

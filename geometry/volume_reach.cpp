@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace umbra::geometry {
 namespace {
@@ -50,6 +51,16 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
 double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 }  // namespace
+
+Box scene_bounds(const Scene& scene) {
+  Box box;
+  for (const Model& m : scene.models)
+    for (const Vec3& v : m.vertices) box.extend(v);
+  box.extend(scene.camera.eye);
+  for (const Light& l : scene.lights)
+    if (l.type == LightType::point) box.extend(l.position);
+  return box;
+}
 
 LightReach light_reach(const Scene& scene, const Box& bounds, const Light& light) {
   LightReach reach;
@@ -98,6 +109,42 @@ double extrusion_factor(const Light& light, const LightReach& reach, double dist
   // far end is never the near one.
   if (!(distance > 0) || !(reach.radius > 0)) return 1;
   return std::max(reach.radius * (1 + kMargin) / distance - 1, kMargin);
+}
+
+double far_end_margin(const Box& bounds) {
+  const double magnitude = std::max(max_abs(bounds.lo), max_abs(bounds.hi));
+  return kMargin * length(bounds.hi - bounds.lo) + 1e-12 * magnitude;
+}
+
+std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds,
+                                            double margin, const Vec3& a, const Vec3& b,
+                                            double k_limit) {
+  const bool point = light.type == LightType::point;
+  const Vec3 da = point ? a - light.position : light.direction;
+  const Vec3 db = point ? b - light.position : light.direction;
+  std::optional<FarEdge> best;
+  double best_k = k_limit;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double out : {-1.0, 1.0}) {
+      // The face's outward normal is `out` along `axis`; both rays must
+      // move out through it, or points beyond a'b' could come back in.
+      if (!(out * da[axis] > 0 && out * db[axis] > 0)) continue;
+      const double face = out > 0 ? bounds.hi[axis] : bounds.lo[axis];
+      const double plane = face + out * margin;
+      const double ka = (plane - a[axis]) / da[axis];
+      const double kb = (plane - b[axis]) / db[axis];
+      const double k = std::max(ka, kb);
+      if (!(ka > 0 && kb > 0 && k < best_k)) continue;
+      FarEdge ends{a + ka * da, b + kb * db};
+      // The far vertices as rounded: past the face by half the margin at
+      // least, which leaves the margin's other half to every rounding.
+      const double clear = face + out * (0.5 * margin);
+      if (!(out * (ends.a[axis] - clear) > 0 && out * (ends.b[axis] - clear) > 0)) continue;
+      best = ends;
+      best_k = k;
+    }
+  }
+  return best;
 }
 
 }  // namespace umbra::geometry

@@ -11,6 +11,11 @@
 
 namespace umbra::geometry {
 
+/// The scene's bounding box as every volume sees it: every model's vertices
+/// (shadow-casting or not), the eye and the point lights. Eye segments to
+/// any surface point run inside it.
+Box scene_bounds(const Scene& scene);
+
 /// What every model's volume for one light must clear.
 struct LightReach {
   /// Point lights: far ends at distance > radius from L. The radius covers
@@ -36,5 +41,36 @@ double distance_lower_bound(const Model& model, std::span<const PolygonSurface> 
 /// distance >= `distance` from the light: every far vertex, edge and cap then
 /// lies beyond reach.radius. Directional lights ignore `distance`.
 double extrusion_factor(const Light& light, const LightReach& reach, double distance);
+
+/// The far vertices a', b' of the side polygon (a, b, b', a') of edge (a, b),
+/// each on its own ray away from the light (x' = x + k_x·(x - L), or
+/// x + k_x·D for a directional light), chosen so that the segment a'b' and
+/// everything beyond it along those rays lie strictly outside `bounds`:
+/// both rays leave the box through one face, and a', b' lie past that face's
+/// plane by `margin` > 0 (which must exceed the rounding of the far vertices
+/// many times over; far_end_margin gives one). Where several faces qualify,
+/// the one with the smallest largest k_x. Preconditions: a and b lie in
+/// `bounds`.
+///
+/// nullopt when no face takes both rays out (the edge's rays straddle an
+/// edge or corner of the box, or a vertex is the light itself), or when
+/// the largest k_x would not be below `k_limit`: the caller then keeps the
+/// factor of extrusion_factor, which is the shorter there.
+///
+/// Why this is enough without caps: an eye segment to a sample runs inside
+/// the box (which holds the eye and every surface), so it meets the ideal
+/// wedge {L + s·(x - L) : x on ab, s >= 1} exactly where it meets the part
+/// before a'b'; the counts along it are those of untruncated volumes.
+struct FarEdge {
+  Vec3 a, b;
+};
+std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds,
+                                            double margin, const Vec3& a, const Vec3& b,
+                                            double k_limit);
+
+/// The margin by which far_edge_leaving_box clears `bounds`: 10^-6 of its
+/// diagonal, plus far more than the rounding of coordinates of the box's
+/// magnitude.
+double far_end_margin(const Box& bounds);
 
 }  // namespace umbra::geometry

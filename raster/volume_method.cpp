@@ -64,12 +64,18 @@ Frame render_volume(const geometry::SceneIndex& index,
   Progress progress(options.progress);
   progress.phase("volumes", 1);
   auto start = Clock::now();
-  // No caps: an eye ray to its first hit crosses none (volume_builder.h).
-  // Without shadows: no volume at all, every count starts and stays at 0.
+  // No caps: an eye ray to its first hit crosses none (volume_builder.h);
+  // so each side may end as soon as it has left the scene's box, which eye
+  // rays never leave before their hit: far less to scan than sides out to
+  // the light's reach. Without shadows: no volume at all, every count
+  // starts and stays at 0.
   const geometry::ShadowVolumes volumes =
-      options.shadows ? geometry::build_shadow_volumes(scene, tables,
-                                                       {.caps = false, .threads = options.threads})
-                      : geometry::ShadowVolumes{};
+      options.shadows
+          ? geometry::build_shadow_volumes(scene, tables,
+                                           {.caps = false,
+                                            .far_ends = geometry::FarEnds::leaving_bounds,
+                                            .threads = options.threads})
+          : geometry::ShadowVolumes{};
   geometry::EyeStart eye;
   if (options.shadows) {
     eye = geometry::eye_start(index, volumes, options.threads);

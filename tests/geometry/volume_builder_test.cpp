@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace umbra::geometry {
 namespace {
@@ -106,6 +107,47 @@ TEST(VolumeBuilder, FarEdgesClearTheReachEvenWhereAnEdgePassesCloseToTheLight) {
   for (const Vec3 c : {Vec3{-10, 0, 0}, Vec3{10, 5, 5}, Vec3{-10, 5, 5}, Vec3{10, 0, 0}})
     corner = std::max(corner, length(c));
   EXPECT_GT(nearest_far_edge(v, {0, 0, 0}), corner);
+}
+
+TEST(VolumeBuilder, SidesLeavingTheBoundsEndPastItsFloorAndNeedNoCaps) {
+  // The lights' ring of the benchmarks: a cube on a floor, lit from above.
+  Scene s;
+  s.camera.eye = {0.4, 1.6, 3.2};
+  Light light;
+  light.position = {1.8, 2.5, 0.2};
+  s.lights = {light};
+  Model floor;
+  floor.vertices = {{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}};
+  floor.polygons = {{0, 1, 2, 3}};
+  s.models = {floor, cube_at({0, 0.5, 0}, 0.5)};
+  EXPECT_THROW(build_shadow_volumes(s, {.caps = true, .far_ends = FarEnds::leaving_bounds}),
+               std::invalid_argument);
+  const ShadowVolumes reach = build_shadow_volumes(s, {.caps = false});
+  const ShadowVolumes bounded =
+      build_shadow_volumes(s, {.caps = false, .far_ends = FarEnds::leaving_bounds});
+  // The same faces, weights and near edges; only the far vertices move.
+  ASSERT_EQ(bounded.polygons.size(), reach.polygons.size());
+  EXPECT_EQ(bounded.extrusion, reach.extrusion);
+  int under_floor = 0;
+  for (std::size_t k = 0; k < bounded.polygons.size(); ++k) {
+    const ShadowPolygon& b = bounded.polygons[k];
+    const ShadowPolygon& r = reach.polygons[k];
+    EXPECT_EQ(b.nb_c, r.nb_c);
+    EXPECT_EQ(b.vertices[0], r.vertices[0]);
+    EXPECT_EQ(b.vertices[1], r.vertices[1]);
+    // Never farther than the reach's far end along the same ray.
+    for (int v = 2; v < 4; ++v) {
+      const Vec3& near = b.vertices[3 - v];
+      EXPECT_LE(length(b.vertices[v] - near), length(r.vertices[v] - near) * (1 + 1e-12));
+    }
+    // The cube's shadow reaches the floor: its sides end just below it.
+    if (b.model == 1 && b.vertices[2].y < 0 && b.vertices[3].y < 0) {
+      ++under_floor;
+      EXPECT_GT(b.vertices[2].y, -1e-3);
+      EXPECT_GT(b.vertices[3].y, -1e-3);
+    }
+  }
+  EXPECT_EQ(under_floor, 6);  // the hexagon round the two faces lit: all reach the floor
 }
 
 TEST(VolumeBuilder, StatisticsCountTypesAndCrowsBaseline) {

@@ -12,6 +12,7 @@
 #include <geometry/scene_index.h>
 #include <geometry/shadow_oracle.h>
 #include <geometry/volume_builder.h>
+#include <geometry/volume_reach.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -249,6 +250,58 @@ TEST(VolumeClosure, CountFromOutsideIsTheNumberOfShadowingPolygons) {
     EXPECT_GE(checked, 500) << "light set " << light_set;
     EXPECT_GT(shadowed, 20) << "light set " << light_set;
     EXPECT_LT(shadowed, checked) << "light set " << light_set;
+    ++light_set;
+  }
+}
+
+TEST(VolumeClosure, SidesLeavingTheBoundsCountFromTheEyeAsTheOracle) {
+  // The renderer's sides: each ends as it leaves the scene's box. Along any
+  // eye segment inside the box, the eye's count plus the crossings of those
+  // sides and of the near caps (which the renderer never needs: it counts
+  // only up to the first hit) must be the number of polygons shadowing the
+  // end point, as with the closed volumes out to the light's reach.
+  std::mt19937_64 rng(20261201);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int light_set = 0;
+  for (const auto& lights : light_sets()) {
+    const Scene scene = test_scene(lights);
+    const SceneIndex index(scene);
+    const ShadowVolumes bounded =
+        build_shadow_volumes(scene, {.caps = false, .far_ends = FarEnds::leaving_bounds});
+    const ShadowVolumes reach = build_shadow_volumes(scene, {.caps = false});
+    ShadowVolumes sides_and_near_caps = bounded;
+    for (const ShadowPolygon& p : build_shadow_volumes(scene).polygons)
+      if (p.type == ShadowPolygonType::model_cap) sides_and_near_caps.polygons.push_back(p);
+    const EyeStart start = eye_start(index, bounded);
+    ASSERT_FALSE(start.degenerate[0]);
+    // Some sides must actually be shorter, or this tests nothing.
+    int shorter = 0;
+    for (std::size_t k = 0; k < bounded.polygons.size(); ++k)
+      shorter += bounded.polygons[k].vertices[2] != reach.polygons[k].vertices[2];
+    EXPECT_GT(shorter, 0) << "light set " << light_set;
+    // Half the points anywhere in the box, half among the models (where the
+    // shadows are), within the box too: the eye segments must stay inside.
+    const Box box = scene_bounds(scene);
+    const Light& light = scene.lights[0];
+    int checked = 0, shadowed = 0;
+    for (int trial = 0; trial < 3000 && checked < 400; ++trial) {
+      const bool anywhere = trial % 2 == 0;
+      const Vec3 lo = anywhere ? box.lo : Vec3{-3, -0.4, -3};
+      const Vec3 hi = anywhere ? box.hi : Vec3{3, std::min(2.5, box.hi.y), 3};
+      const Vec3 x{lo.x + unit(rng) * (hi.x - lo.x), lo.y + unit(rng) * (hi.y - lo.y),
+                   lo.z + unit(rng) * (hi.z - lo.z)};
+      if (light.light_end && length(x - light.position) >= *light.light_end * 0.999) continue;
+      const auto odd = shadowing_polygons(index, x, 0);
+      const auto crossings = crossing_count(sides_and_near_caps, 0, scene.camera.eye, x);
+      if (!odd || !crossings) continue;
+      const int truth = static_cast<int>(odd->size());
+      EXPECT_EQ(start.count[0] + *crossings, truth)
+          << "light set " << light_set << " x " << x.x << "," << x.y << "," << x.z;
+      ++checked;
+      shadowed += truth > 0;
+    }
+    EXPECT_GE(checked, 300) << "light set " << light_set;
+    EXPECT_GT(shadowed, 20) << "light set " << light_set;
     ++light_set;
   }
 }
