@@ -43,6 +43,21 @@ void Band::flag_near_edges() {
       const double x = strip.x0 + row_y * strip.slope;
       const double x_lo = std::max(x - strip.half_width, strip.x_lo);
       const double x_hi = std::min(x + strip.half_width, strip.x_hi);
+      // Nearly every strip holds no pixel centre on the row: settle that
+      // with one truncation instead of the clamped ceil and floor below
+      // (software sequences on baseline x86-64, most of this loop's cost).
+      // The columns below, [clamp(ceil(u_lo)), clamp(floor(u_hi) + 1)) with
+      // u = x − 0.5 and clamp to [0, w] (w the width), are empty when
+      // u_hi < 0, u_lo > w − 1 or u_lo > u_hi; otherwise exactly when no
+      // integer lies in [max(u_lo, 0), min(u_hi, w − 1)], i.e. when
+      // floor(min(u_hi, w − 1)), a truncation of a value in [0, w − 1], is
+      // below u_lo. NaN goes on to the whole row.
+      const double u_lo = x_lo - 0.5, u_hi = x_hi - 0.5;
+      if (!std::isnan(u_lo) && !std::isnan(u_hi)) {
+        if (u_hi < 0 || u_lo > width - 1 || u_lo > u_hi) continue;
+        const double last = std::min(u_hi, width - 1.0);
+        if (static_cast<double>(static_cast<int>(last)) < u_lo) continue;
+      }
       int i0 = clamp_column(std::ceil(x_lo - 0.5), width);
       int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
       if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
