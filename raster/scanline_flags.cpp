@@ -58,7 +58,7 @@ void Band::flag_near_edges() {
         const double last = std::min(u_hi, width - 1.0);
         if (static_cast<double>(static_cast<int>(last)) < u_lo) continue;
       }
-      int i0 = clamp_column(std::ceil(x_lo - 0.5), width);
+      int i0 = first_column(x_lo, width);
       int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
       if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
       if (i0 >= i1) continue;

@@ -31,6 +31,19 @@ inline int clamp_column(double c, int width) {
   return static_cast<int>(c);
 }
 
+/// The first column whose centre lies at or right of pixel x:
+/// clamp_column(std::ceil(x - 0.5), width), bit for bit, without std::ceil
+/// (a software sequence on baseline x86-64; this runs per edge and row).
+/// v = x − 0.5 in (0, width − 1] truncates to floor(v); above, the ceiling
+/// is width or more; at or below 0 (and NaN), the clamp gives 0.
+inline int first_column(double x, int width) {
+  const double v = x - 0.5;
+  if (!(v > 0)) return 0;
+  if (v > width - 1) return width;
+  const int t = static_cast<int>(v);
+  return t + (t < v);
+}
+
 /// A shadow polygon's depth over a screen box, for skipping it where it is
 /// clearly behind every visible point (Band::behind_band).
 struct DepthFloor {

@@ -68,21 +68,37 @@ void Band::scan_shadows() {
     const std::uint32_t polygon = live_[k].polygon;
     std::size_t end = k;
     while (end < live_.size() && live_[end].polygon == polygon) ++end;
+    const ProjectedPolygon& shadow = scene_.polygons[polygon];
     for (int j = band0_; j < band1_; ++j) {
+      // A side polygon is convex: two crossings a row, kept in registers;
+      // any more (a clipped or general polygon) go through columns_.
+      int two[2];
+      std::size_t found = 0;
       columns_.clear();
       for (std::size_t n = k; n < end; ++n) {
         const ShadowEdge& e = live_[n];
         if (e.first > j || e.last < j) continue;
-        columns_.push_back(clamp_column(std::ceil(crossing_x(e.m, e.c, e.edge, j) - 0.5), width));
+        const int column = first_column(crossing_x(e.m, e.c, e.edge, j), width);
+        if (found < 2) two[found] = column;
+        if (found == 2) columns_.assign(two, two + 2);
+        if (found >= 2) columns_.push_back(column);
+        ++found;
       }
-      if (columns_.empty()) continue;
+      if (found == 0) continue;
+      row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
       // Pixel i is inside when an odd number of the polygon's crossings lie
       // at columns <= i: the even-odd rule of the span walk, whose spans
       // start at these columns. So: the pixels between consecutive pairs.
-      std::sort(columns_.begin(), columns_.end());
-      row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
-      for (std::size_t m = 0; m < columns_.size(); m += 2)
-        shade_shadow(polygon, columns_[m], m + 1 < columns_.size() ? columns_[m + 1] : width, j);
+      if (found == 1) {
+        shade_shadow(shadow, polygon, two[0], width, j);
+      } else if (found == 2) {
+        shade_shadow(shadow, polygon, std::min(two[0], two[1]), std::max(two[0], two[1]), j);
+      } else {
+        std::sort(columns_.begin(), columns_.end());
+        for (std::size_t m = 0; m < columns_.size(); m += 2)
+          shade_shadow(shadow, polygon, columns_[m],
+                       m + 1 < columns_.size() ? columns_[m + 1] : width, j);
+      }
     }
     k = end;
   }
@@ -97,8 +113,8 @@ void Band::scan_shadows() {
 /// group's flag instead, counted by count_groups). Its depth there, against
 /// 0 and against the visible depth, must be clear of both error bounds, or
 /// the pixel is uncertain for the polygon's light.
-void Band::shade_shadow(std::uint32_t polygon, int i0, int i1, int j) {
-  const ProjectedPolygon& shadow = scene_.polygons[polygon];
+void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, int i0, int i1,
+                        int j) {
   const double z_near = scene_.camera.z_near;
   for (int i = i0; i < i1; ++i) {
     const std::size_t p = pixel(i, j);

@@ -47,8 +47,8 @@ void Band::scan_row(int j, std::size_t carried) {
     toggle(crossings_[k].polygon);
     // A span without surfaces is background: nothing to do.
     if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
-    const int i0 = clamp_column(std::ceil(crossings_[k].x - 0.5), width);
-    const int i1 = clamp_column(std::ceil(crossings_[k + 1].x - 0.5), width);
+    const int i0 = first_column(crossings_[k].x, width);
+    const int i1 = first_column(crossings_[k + 1].x, width);
     if (i0 < i1) {
       shade_span(i0, i1, j);
       ++spans_;
