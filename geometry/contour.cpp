@@ -28,9 +28,16 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
       // The light in the polygon's plane: no volume (DESIGN.md). Asked of a
       // fan triangle of nonzero area, which spans the plane.
       const auto& t = surface.triangles.front().local;
-      if (orientation(points[t[0]], HPoint::point(points[t[1]]), HPoint::point(points[t[2]]),
-                      light) == Sign::zero)
+      const Sign side = orientation(points[t[0]], HPoint::point(points[t[1]]),
+                                    HPoint::point(points[t[2]]), light);
+      if (side == Sign::zero) continue;
+      // A triangle's fan is that triangle, (0, 1, 2): its facing is this
+      // very sign, fan_orientation's own call. Meshes are mostly triangles,
+      // and every light asks each one.
+      if (points.size() == 3) {
+        roles[p].facing = to_int(side);
         continue;
+      }
     }
     if (points.size() >= 4 && l_twisted(points, light)) {
       roles[p] = {1, true};

@@ -148,7 +148,7 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
 
     double distance = 0;
     if (light.type == LightType::point) {
-      distance = distance_lower_bound(model, tables.surfaces, casting, light.position);
+      distance = distance_lower_bound(model, tables.surfaces, tables.runs, casting, light.position);
       if (light.light_end && distance > *light.light_end) {
         // Wholly outside the sphere: everything it could shadow is out of range.
         ++stats.culled_models;

@@ -1,6 +1,7 @@
 // Where side polygons may end when the volume has no caps
 // (far_edge_leaving_box): just past one face of the scene's box, through
 // which both of the edge's rays leave, and nowhere that could come back in.
+#include <geometry/mesh_io.h>
 #include <geometry/volume_reach.h>
 #include <gtest/gtest.h>
 
@@ -146,6 +147,43 @@ TEST(FarEdgeLeavingBox, MarginIsARelativeAmountOfTheBoxAndItsPlace) {
   EXPECT_NEAR(near_origin, 1e-6 * 10 + 1e-12 * 10, 1e-18);
   // Far from the origin the rounding of the coordinates counts too.
   EXPECT_GT(far_end_margin(box({1e9, 0, 0}, {1e9 + 10, 0, 0})), 1e-3);
+}
+
+TEST(DistanceLowerBound, RunsGiveTheFullScansValueBitForBit) {
+  // The torus of the default scene (288 quads, non-planar: fan triangles)
+  // and a random soup of thin triangles spread over a box, each light's
+  // casting polygons a random subset.
+  const PolygonSoup torus = read_polygon_soup(UMBRA_DATA_DIR "/meshes/torus.off");
+  Model mesh;
+  mesh.vertices = torus.vertices;
+  mesh.polygons = torus.polygons;
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Model soup;
+  for (std::uint32_t k = 0; k < 3000; ++k) {
+    const Vec3 c{3 * unit(rng), 2 * unit(rng), 3 * unit(rng)};
+    for (int v = 0; v < 3; ++v)
+      soup.vertices.push_back(c + 0.05 * Vec3{unit(rng), unit(rng), unit(rng)});
+    soup.polygons.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+  }
+  int compared = 0;
+  for (const Model* model : {&mesh, &soup}) {
+    const std::vector<PolygonSurface> surfaces = model_surfaces(*model);
+    const TriangleRuns runs = triangle_runs(*model, surfaces);
+    for (int trial = 0; trial < 200; ++trial) {
+      // Near (inside the mesh's box), mid and far lights.
+      const double reach = trial % 3 == 0 ? 0.5 : (trial % 3 == 1 ? 4.0 : 100.0);
+      const Vec3 light = reach * Vec3{unit(rng), unit(rng), unit(rng)};
+      std::vector<std::uint32_t> polygons;
+      for (std::uint32_t p = 0; p < model->polygons.size(); ++p)
+        if (trial % 5 == 0 || unit(rng) > -0.5) polygons.push_back(p);
+      const double full = distance_lower_bound(*model, surfaces, polygons, light);
+      const double fast = distance_lower_bound(*model, surfaces, runs, polygons, light);
+      EXPECT_EQ(full, fast) << "trial " << trial;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 400);
 }
 
 }  // namespace
