@@ -44,6 +44,7 @@ void Band::run(int row0, int row1) {
   for (int b0 = row0; b0 < row1; b0 += kBandRows) {
     band0_ = b0;
     band1_ = std::min(row1, b0 + kBandRows);
+    for (int j = b0; j < band1_; ++j) row_sy_[j - b0] = scene_.camera.row_screen_y(j);
     // The band's surfaces: visible points, depths and their errors.
     for (int j = b0; j < band1_; ++j) {
       row_base_ = static_cast<std::size_t>(j - b0) * width;

@@ -135,9 +135,10 @@ class Band {
   /// 1e-6 px within which flag_near_edges flags a pixel centre; m.y·sy + m.z
   /// rounds as in the plain quotient. Negating m (the same edge seen from
   /// its other polygon) negates c and gives the same bits. Endpoint
-  /// interpolation only for a line with m.x = 0.
-  double crossing_x(const Vec3& m, double c, std::uint32_t edge, int j) const {
-    const double sy = scene_.camera.row_screen_y(j);
+  /// interpolation only for a line with m.x = 0. `sy` is row j's
+  /// CameraSpace::row_screen_y, which the caller makes once per row (it
+  /// holds a division).
+  double crossing_x(const Vec3& m, double c, std::uint32_t edge, int j, double sy) const {
     double x = (m.y * sy + m.z) * c + 0.5 * scene_.camera.frame.width;
     if (!std::isfinite(x)) {
       const ProjectedEdge& e = *scene_.edges[edge].edge;
@@ -237,6 +238,7 @@ class Band {
   std::vector<double> visible_error_;    // depth error bound of each pixel's visible hit
   std::vector<std::uint8_t> flags_;      // per twisted group: its flag along the current ray
   int band0_ = 0, band1_ = 0;            // the current band's rows [band0_, band1_)
+  double row_sy_[kBandRows] = {};        // row_screen_y of each of the band's rows
   std::size_t row_base_ = 0;             // the current row's place in ray_ and the like
   // depth_bound_[k][i]: the largest bound on an exact visible depth in the
   // band's columns [i, i + 2^k) (-infinity where nothing is seen).

@@ -70,6 +70,7 @@ void Band::scan_shadows() {
     while (end < live_.size() && live_[end].polygon == polygon) ++end;
     const ProjectedPolygon& shadow = scene_.polygons[polygon];
     for (int j = band0_; j < band1_; ++j) {
+      const double sy = row_sy_[j - band0_];
       // A side polygon is convex: two crossings a row, kept in registers;
       // any more (a clipped or general polygon) go through columns_.
       int two[2];
@@ -78,7 +79,7 @@ void Band::scan_shadows() {
       for (std::size_t n = k; n < end; ++n) {
         const ShadowEdge& e = live_[n];
         if (e.first > j || e.last < j) continue;
-        const int column = first_column(crossing_x(e.m, e.c, e.edge, j), width);
+        const int column = first_column(crossing_x(e.m, e.c, e.edge, j, sy), width);
         if (found < 2) two[found] = column;
         if (found == 2) columns_.assign(two, two + 2);
         if (found >= 2) columns_.push_back(column);

@@ -29,7 +29,8 @@ void Band::scan_row(int j, std::size_t carried) {
   // x sort: insertion sort of the carried crossings (nearly sorted since
   // the previous row), the new ones sorted apart, then one merge.
 
-  for (Crossing& c : crossings_) c.x = crossing_x(c.m, c.c, c.edge, j);
+  const double sy = row_sy_[j - band0_];
+  for (Crossing& c : crossings_) c.x = crossing_x(c.m, c.c, c.edge, j, sy);
   const auto less = [](const Crossing& a, const Crossing& b) {
     return a.x < b.x || (a.x == b.x && a.edge < b.edge);
   };
