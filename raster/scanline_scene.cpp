@@ -90,6 +90,11 @@ DepthFloor depth_floor(const ProjectedPolygon& polygon, const CameraSpace& camer
       denominator = std::min(denominator, std::abs(n_d));
     }
   out.floor = t_min * (1 - 1e-6) - polygon.depth_error_of(offset, denominator);
+  // shade_shadow's first bound takes |t|·|d|·(1 + 1e-9) + |p0| for the
+  // offset, at most t·|d|₁ + |p0| at the box's extremes (above) but for that
+  // factor and the rounding of the actual rays: a millionth more covers both,
+  // and a millionth less of |n·d| the same on the other side.
+  out.error = polygon.depth_error_of(offset * (1 + 1e-6), denominator * (1 - 1e-6));
   return out;
 }
 

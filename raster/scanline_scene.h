@@ -45,11 +45,16 @@ inline int first_column(double x, int width) {
 }
 
 /// A shadow polygon's depth over a screen box, for skipping it where it is
-/// clearly behind every visible point (Band::behind_band).
+/// clearly behind every visible point (Band::behind_band), and the largest
+/// error bound of its depth there (Band::shade_shadow).
 struct DepthFloor {
   /// Below the polygon's depth less its error bound (depth_error) at every
   /// pixel centre of the box; -infinity when no such bound was found.
   double floor = -kInfinity;
+  /// At least the bound shade_shadow first tries at every pixel centre of
+  /// the box, depth_error_at(d, (|t|·|d| + |p0|)·(1 + 1e-9)); infinity when
+  /// no such bound was found.
+  double error = kInfinity;
   int i0 = 0, i1 = -1;  ///< the columns whose centres lie in the box (empty: i0 > i1)
 };
 

@@ -117,6 +117,10 @@ void Band::scan_shadows() {
 void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, int i0, int i1,
                         int j) {
   const double z_near = scene_.camera.z_near;
+  // The largest first bound over the polygon's box (DepthFloor::error,
+  // infinite where none was found): a depth clear with it is clear with the
+  // pixel's own, so most pixels need neither.
+  const double box_error = scene_.floors[polygon].error;
   for (int i = i0; i < i1; ++i) {
     const std::size_t p = pixel(i, j);
     if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
@@ -130,13 +134,16 @@ void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, i
     };
     // depth_error measures |t·d − p0| (a square root); first try the bound
     // with |t|·|d| + |p0| in its place, which is at least as large (the
-    // factor covers both lengths' rounding). The error bound grows with that
-    // distance and too_close with the error, so a depth clear of this
-    // larger bound is clear of depth_error's: the decision is the same.
-    const double offset_bound =
-        (std::abs(t) * ray_length_[row_base_ + i] + shadow.p0_length) * (1 + 1e-9);
-    if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
-      flag_light(p, shadow.light);
+    // factor covers both lengths' rounding), and before it the box's bound,
+    // larger still. The error bound grows with that distance and too_close
+    // with the error, so a depth clear of a larger bound is clear of
+    // depth_error's: the decision is the same.
+    if (unclear(box_error)) {
+      const double offset_bound =
+          (std::abs(t) * ray_length_[row_base_ + i] + shadow.p0_length) * (1 + 1e-9);
+      if (unclear(shadow.depth_error_at(d, offset_bound)) && unclear(shadow.depth_error(d, t)))
+        flag_light(p, shadow.light);
+    }
     if (!(t > 0 && t < t_visible)) continue;
     if (shadow.group < 0)
       result_.count[p * scene_.lights + shadow.light] += shadow.weight;

@@ -24,10 +24,14 @@ struct ScanlineInput {
 };
 
 /// What the volume method hands the scanline: the surfaces, then every
-/// shadow polygon of every light, each twisted group's flag at the eye.
-ScanlineInput scanline_input(const geometry::Scene& scene) {
+/// shadow polygon of every light (with sides ending as they leave the
+/// scene, as the renderer's, or out to the light's reach, which hides far
+/// more of them behind the floors), each twisted group's flag at the eye.
+ScanlineInput scanline_input(const geometry::Scene& scene,
+                             geometry::FarEnds far_ends = geometry::FarEnds::leaving_bounds) {
   const geometry::SceneIndex index(scene);
-  const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene, {.caps = false});
+  const geometry::ShadowVolumes volumes =
+      geometry::build_shadow_volumes(scene, {.caps = false, .far_ends = far_ends});
   ScanlineInput in;
   in.frame = geometry::camera_frame(scene.camera);
   in.lights = scene.lights.size();
@@ -67,15 +71,18 @@ TEST(ScanlineSkip, SkippingHiddenShadowPolygonsChangesNothing) {
                            "scenes/bergeron/fig14_eye_inside_open_box.json",
                            "scenes/bergeron/fig14_eye_under_open_quad.json",
                            "scenes/bergeron/fig15_sphere_of_influence.json"}) {
-    const ScanlineInput in = scanline_input(geometry::load_scene(data / name));
-    const ScanlineResult all =
-        scanline_render(in.frame, in.polygons, in.lights, 1, in.group_start, nullptr, false);
-    EXPECT_EQ(all.shadow_bands_skipped, 0u) << name;
-    for (const unsigned threads : {1u, 3u}) {
-      const ScanlineResult skipping =
-          scanline_render(in.frame, in.polygons, in.lights, threads, in.group_start);
-      expect_same(all, skipping, std::string(name) + ", threads " + std::to_string(threads));
-      skipped_in_all += skipping.shadow_bands_skipped;
+    for (const geometry::FarEnds ends :
+         {geometry::FarEnds::leaving_bounds, geometry::FarEnds::past_reach}) {
+      const ScanlineInput in = scanline_input(geometry::load_scene(data / name), ends);
+      const ScanlineResult all =
+          scanline_render(in.frame, in.polygons, in.lights, 1, in.group_start, nullptr, false);
+      EXPECT_EQ(all.shadow_bands_skipped, 0u) << name;
+      for (const unsigned threads : {1u, 3u}) {
+        const ScanlineResult skipping =
+            scanline_render(in.frame, in.polygons, in.lights, threads, in.group_start);
+        expect_same(all, skipping, std::string(name) + ", threads " + std::to_string(threads));
+        skipped_in_all += skipping.shadow_bands_skipped;
+      }
     }
   }
   // The scenes do hide shadow polygons behind their floors and boxes.
