@@ -1,9 +1,10 @@
 #pragma once
-// Boxes over a model's fan triangles, a run of consecutive polygons each:
-// what a nearest-distance query from a light needs to leave most of a large
-// mesh unread (distance_lower_bound in volume_reach.h). Meshes keep
-// neighbouring polygons near each other in their files, so a run's box is
-// small. Made once per model (model_tables.h), asked by every light.
+// Boxes over a model's fan triangles, a run of nearby polygons each: what a
+// nearest-distance query from a light needs to leave most of a large mesh
+// unread (distance_lower_bound in volume_reach.h). The polygons are put in
+// Morton order of their boxes' centres first, so a run's box is small
+// whatever order the file kept them in (scanned meshes keep none). Made
+// once per model (model_tables.h), asked by every light.
 #include <geometry/bvh.h>
 #include <geometry/polygon_surface.h>
 #include <geometry/scene.h>
@@ -15,10 +16,11 @@
 namespace umbra::geometry {
 
 struct TriangleRuns {
-  /// Polygons [kRun·r, kRun·(r + 1)) form run r.
+  /// order[kRun·r, kRun·(r + 1)) form run r.
   static constexpr std::uint32_t kRun = 32;
-  /// Per run: the box of its polygons' fan-triangle vertices (empty for a
-  /// run with no fan triangle).
+  /// Every polygon with a fan triangle, in Morton order of its box's centre.
+  std::vector<std::uint32_t> order;
+  /// Per run: the box of its polygons' fan-triangle vertices.
   std::vector<Box> boxes;
   /// Per polygon: the largest |coordinate| of its fan triangles' vertices,
   /// 0 without any.

@@ -131,36 +131,40 @@ double distance_lower_bound(const Model& model, std::span<const PolygonSurface> 
                             const Vec3& light) {
   // The scale as the full scan takes it: every listed polygon's triangles.
   double scale = max_abs(light);
-  for (std::uint32_t pi : polygons) scale = std::max(scale, runs.magnitude[pi]);
-  // Each run's slice of the list, and the runs nearest first.
-  struct Slice {
-    double distance;
-    std::size_t begin, end;  // into polygons
-    double magnitude;        // of the light and the run's box
-  };
-  std::vector<Slice> slices;
-  for (std::size_t k = 0; k < polygons.size();) {
-    const std::uint32_t run = polygons[k] / TriangleRuns::kRun;
-    std::size_t end = k;
-    while (end < polygons.size() && polygons[end] / TriangleRuns::kRun == run) ++end;
-    const Box& box = runs.boxes[run];
-    if (!box.empty())
-      slices.push_back({box_distance(light, box), k, end,
-                        std::max({max_abs(light), max_abs(box.lo), max_abs(box.hi)})});
-    k = end;
+  std::vector<std::uint8_t> listed(model.polygons.size(), 0);
+  for (std::uint32_t pi : polygons) {
+    scale = std::max(scale, runs.magnitude[pi]);
+    listed[pi] = 1;
   }
-  std::sort(slices.begin(), slices.end(),
-            [](const Slice& a, const Slice& b) { return a.distance < b.distance; });
+  // The runs nearest first. A polygon without fan triangles adds nothing.
+  struct Run {
+    double distance;
+    double magnitude;  // of the light and the run's box
+    std::size_t index;
+  };
+  std::vector<Run> order;
+  order.reserve(runs.boxes.size());
+  for (std::size_t r = 0; r < runs.boxes.size(); ++r) {
+    const Box& box = runs.boxes[r];
+    order.push_back({box_distance(light, box),
+                     std::max({max_abs(light), max_abs(box.lo), max_abs(box.hi)}), r});
+  }
+  std::sort(order.begin(), order.end(),
+            [](const Run& a, const Run& b) { return a.distance < b.distance; });
   double nearest = std::numeric_limits<double>::infinity();
-  for (const Slice& slice : slices) {
+  for (const Run& run : order) {
     // Every triangle of the run is at least the box's distance away; as
     // computed, within far less than this margin of it (the same few
     // hundred ulps as above), so a run past it cannot hold a computed
     // distance below `nearest`: skipping it leaves the minimum as it is.
     // (Not a break: the margin differs from run to run.)
-    if (slice.distance * (1 - 1e-9) - 1e-12 * slice.magnitude > nearest) continue;
-    for (std::size_t k = slice.begin; k < slice.end; ++k)
-      nearest_triangle(model, surfaces[polygons[k]], polygons[k], light, nearest);
+    if (run.distance * (1 - 1e-9) - 1e-12 * run.magnitude > nearest) continue;
+    const std::size_t begin = run.index * TriangleRuns::kRun;
+    const std::size_t end = std::min(begin + TriangleRuns::kRun, runs.order.size());
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t pi = runs.order[k];
+      if (listed[pi]) nearest_triangle(model, surfaces[pi], pi, light, nearest);
+    }
   }
   return lower_bound_from(nearest, scale);
 }

@@ -40,7 +40,7 @@ double distance_lower_bound(const Model& model, std::span<const PolygonSurface> 
 
 /// The same value, bit for bit, reading only the runs (triangle_runs.h)
 /// whose box could hold a nearer triangle: a light asks a 90k-triangle mesh
-/// for a few hundred triangles instead of all. `polygons` in increasing order.
+/// for a few hundred triangles instead of all.
 double distance_lower_bound(const Model& model, std::span<const PolygonSurface> surfaces,
                             const TriangleRuns& runs, std::span<const std::uint32_t> polygons,
                             const Vec3& light);
