@@ -10,11 +10,9 @@ std::vector<ModelTables> model_tables(const Scene& scene, unsigned threads, bool
   parallel_for(2 * scene.models.size(), threads, [&](std::size_t item) {
     const Model& model = scene.models[item / 2];
     if (casting_only && !model.casts_shadows) return;
-    if (item % 2 == 0) {
-      ModelTables& t = tables[item / 2];
-      t.surfaces = model_surfaces(model);
-      t.runs = triangle_runs(model, t.surfaces);
-    } else
+    if (item % 2 == 0)
+      tables[item / 2].surfaces = model_surfaces(model);
+    else
       tables[item / 2].edges = edge_table(model);
   });
   return tables;

@@ -1,13 +1,12 @@
 #pragma once
-// What depends on a model alone, whatever the light: its polygons' surfaces,
-// its edge table and its triangles' runs (for distances from each light). A render reports every model's edge topology from them
+// What depends on a model alone, whatever the light: its polygons' surfaces
+// and its edge table. A render reports every model's edge topology from them
 // and builds every light's volume from them: made once and shared, where
 // each used to make its own (twice the hashing of every vertex and edge on
 // a shadowed frame).
 #include <geometry/edge_table.h>
 #include <geometry/polygon_surface.h>
 #include <geometry/scene.h>
-#include <geometry/triangle_runs.h>
 
 #include <vector>
 
@@ -16,7 +15,6 @@ namespace umbra::geometry {
 struct ModelTables {
   std::vector<PolygonSurface> surfaces;  ///< model_surfaces(model)
   EdgeTable edges;                       ///< edge_table(model)
-  TriangleRuns runs;                     ///< triangle_runs(model, surfaces)
 };
 
 /// Per model of the scene, in model order, on up to `threads` threads (0:

@@ -5,6 +5,7 @@
 #include <geometry/volume_builder.h>
 #include <geometry/volume_reach.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -115,6 +116,9 @@ struct SceneShare {
   double margin = 0;  ///< far_end_margin(bounds)
   /// Per model (model_tables.h); may be empty where it casts no shadows.
   std::span<const ModelTables> tables;
+  /// Per model: its triangles' runs for the lights' distance queries
+  /// (triangle_runs.h); empty where it casts no shadows.
+  std::vector<TriangleRuns> runs;
 };
 
 /// Light li's volumes, for every shadow-casting model in model order; each
@@ -148,7 +152,8 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
 
     double distance = 0;
     if (light.type == LightType::point) {
-      distance = distance_lower_bound(model, tables.surfaces, tables.runs, casting, light.position);
+      distance =
+          distance_lower_bound(model, tables.surfaces, share.runs[mi], casting, light.position);
       if (light.light_end && distance > *light.light_end) {
         // Wholly outside the sphere: everything it could shadow is out of range.
         ++stats.culled_models;
@@ -224,7 +229,16 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
         "build_shadow_volumes: far ends that leave the bounds need caps = false (the far caps "
         "close a volume scaled about the light)");
   const Box bounds = scene_bounds(scene);
-  const SceneShare share{scene, bounds, far_end_margin(bounds), tables};
+  SceneShare share{scene, bounds, far_end_margin(bounds), tables, {}};
+  // Runs serve point lights' distances only: made once per casting model.
+  share.runs.resize(scene.models.size());
+  const bool point_lights = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                        [](const Light& l) { return l.type == LightType::point; });
+  if (point_lights)
+    parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
+      if (scene.models[mi].casts_shadows)
+        share.runs[mi] = triangle_runs(scene.models[mi], tables[mi].surfaces);
+    });
 
   // The lights are independent: each builds its own part on some thread;
   // the parts are then put together in light order, as one pass would.
