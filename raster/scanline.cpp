@@ -100,9 +100,11 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // z < z_near, which the clipping removed: nothing is certain then.
   const bool near_eye = std::any_of(scene.polygons.begin(), scene.polygons.end(),
                                     [](const detail::ProjectedPolygon& p) { return p.near_eye; });
-  if (near_eye)
+  if (near_eye) {
     std::fill(result.uncertain.begin(), result.uncertain.end(),
               static_cast<std::uint8_t>(kSurfaceUncertain));
+    std::fill(result.light_mask.begin(), result.light_mask.end(), std::uint64_t{0});
+  }
   return result;
 }
 

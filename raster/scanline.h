@@ -57,7 +57,8 @@ struct ScanlineResult {
   /// the count at the eye is the caller's. 0 where the ray hits nothing:
   /// spans without a surface are skipped.
   UninitializedVector<std::int32_t> count;
-  /// kSurfaceUncertain and kLightsUncertain, or 0 where every answer is final.
+  /// kSurfaceUncertain (alone: everything is decided again), or
+  /// kLightsUncertain, or 0 where every answer is final.
   UninitializedVector<std::uint8_t> uncertain;
   /// Per pixel, light_bit of every light whose count may be wrong: a shadow
   /// polygon of it too close to call against the visible point, or the

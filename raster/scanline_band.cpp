@@ -19,23 +19,21 @@ void Band::run(int row0, int row1) {
   const bool carry_on = row0 == next_row_;
   if (!carry_on) {
     crossings_.clear();
-    shadow_edges_.clear();
     strips_.clear();
-    // Start the lists at row0: every edge active there, every strip that
-    // meets it. The shadow pass takes the buckets of later rows a band at a
-    // time (start_shadow_band), the surface pass row by row. With many
-    // lights this is tens of thousands of edges, each read from the edge
-    // table out of order: the scheduler (scanline.cpp) keeps restarts few.
-    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k) {
-      if (scene_.by_scan_row_last[k] < row0) continue;
-      if (scene_.by_scan_row_shadow[k])
-        shadow_edges_.push_back(make_shadow_edge(k));
-      else
-        activate(k);
-    }
-    std::sort(shadow_edges_.begin(), shadow_edges_.end(), by_edge);
+    shadows_.clear();
+    // Start the lists at row0: every surface edge active there, every strip
+    // and shadow polygon that meets it. The shadow pass takes the buckets of
+    // later rows a band at a time (start_shadow_band), the surface pass row
+    // by row. Edges are read from the edge table out of order: the
+    // scheduler (scanline.cpp) keeps restarts few.
+    for (std::size_t k = 0; k < scene_.scan_bucket[row0 + 1]; ++k)
+      if (scene_.by_scan_row_last[k] >= row0) activate(k);
     for (std::size_t k = 0; k < scene_.near_bucket[row0 + 1]; ++k)
       if (scene_.by_near_row_last[k] >= row0) strips_.push_back(make_strip(k));
+    for (std::size_t k = 0; k < scene_.shadow_bucket[row0 + 1]; ++k)
+      if (scene_.shadow_by_row_last[k] >= row0)
+        shadows_.push_back({scene_.shadow_by_row[k], scene_.shadow_by_row_last[k]});
+    std::sort(shadows_.begin(), shadows_.end(), by_polygon);
     taken_ = row0 + 1;
   }
   // Lists carried on hold what the last chunk left at its end, row0 - 1:
@@ -54,8 +52,7 @@ void Band::run(int row0, int row1) {
       // an insertion sort would move each across the whole list).
       const std::size_t carried = j != fresh_row ? crossings_.size() : 0;
       if (j != fresh_row)
-        for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k)
-          if (!scene_.by_scan_row_shadow[k]) activate(k);
+        for (std::size_t k = scene_.scan_bucket[j]; k < scene_.scan_bucket[j + 1]; ++k) activate(k);
       scan_row(j, carried);
     }
     // Only behind_in_band reads the bound: a plain pass has nothing to skip.
@@ -76,19 +73,12 @@ void Band::activate(std::size_t k) {
   crossings_.push_back({0, t.edge->m, row_scale(t.edge->m), e, t.edge->polygon, t.scan.last});
 }
 
-/// The shadow edge at place k of the y bucket sort.
-Band::ShadowEdge Band::make_shadow_edge(std::size_t k) const {
-  const std::uint32_t e = scene_.by_scan_row[k];
-  const TableEdge& t = scene_.edges[e];
-  return {t.edge->m, row_scale(t.edge->m), e, t.edge->polygon, t.scan.first, t.scan.last};
-}
-
-/// The strip of the edge at place k of the near rows' bucket sort.
-Band::NearStrip Band::make_strip(std::size_t k) const {
+/// The strip of the surface edge at place k of the near rows' bucket sort.
+Strip Band::make_strip(std::size_t k) const {
   const std::uint32_t e = scene_.by_near_row[k];
   const TableEdge& t = scene_.edges[e];
-  return {t.strip_x0, t.strip_slope,   t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
-          e,          t.edge->polygon, t.near.first,       t.near.last,  t.shadow};
+  return {t.strip_x0,   t.strip_slope, t.strip_half_width, t.strip_x_lo,
+          t.strip_x_hi, e,             t.near.first,       t.near.last};
 }
 
 }  // namespace umbra::raster::detail

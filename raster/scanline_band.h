@@ -49,15 +49,10 @@ class Band {
     inside_.assign(polygons, 0);
     reserve_huge(slot_, polygons);
     slot_.assign(polygons, 0);
-    reserve_huge(cull_band_, polygons);
-    cull_band_.assign(polygons, -1);
-    reserve_huge(culled_, polygons);
-    culled_.assign(polygons, 0);
     reserve_huge(crossings_, scene.by_scan_row.size());
-    reserve_huge(shadow_edges_, scene.by_scan_row.size());
-    reserve_huge(live_, scene.by_scan_row.size());
     reserve_huge(strips_, scene.by_near_row.size());
-    reserve_huge(band_strips_, scene.by_near_row.size());
+    reserve_huge(shadows_, scene.shadow_by_row.size());
+    reserve_huge(live_, scene.shadow_by_row.size());
   }
 
   /// Rows go through the surface pass and the shadow pass a band of this
@@ -85,47 +80,28 @@ class Band {
     std::uint32_t polygon;
     int last;  ///< last active row
   };
-  /// An edge whose uncertainty strip meets the row: what every row reads to
-  /// find the strip's pixels on it (tens of thousands of strips per row with
-  /// many lights, nearly all empty), copied from the edge table. The rest
-  /// is read from the table for the few pixels inside.
-  struct NearStrip {
-    double x0, slope, half_width, x_lo, x_hi;  ///< TableEdge::strip_*
-    std::uint32_t edge;
+  /// A shadow polygon in the shadow pass's list, which is kept a band at a
+  /// time, with its last row (ShadowSpan::last) so that dropping it needs no
+  /// look into the scene.
+  struct ActiveShadow {
     std::uint32_t polygon;
-    int first, last;  ///< the strip's rows
-    bool shadow;
+    int last;
   };
-  /// A shadow polygon's edge in the shadow pass's lists, which are kept a
-  /// band at a time: the rows on which it is active, and its line.
-  struct ShadowEdge {
-    Vec3 m;    ///< the edge's homogeneous line (ProjectedEdge::m)
-    double c;  ///< row_scale(m)
-    std::uint32_t edge;
-    std::uint32_t polygon;
-    int first, last;
-  };
-  static bool by_edge(const ShadowEdge& a, const ShadowEdge& b) { return a.edge < b.edge; }
+  static bool by_polygon(const ActiveShadow& a, const ActiveShadow& b) {
+    return a.polygon < b.polygon;
+  }
 
   /// The surface edge at place k of the y bucket sort enters the active list.
   void activate(std::size_t k);
-  /// The shadow edge at place k of the y bucket sort.
-  ShadowEdge make_shadow_edge(std::size_t k) const;
-  /// The strip of the edge at place k of the near rows' bucket sort.
-  NearStrip make_strip(std::size_t k) const;
+  /// The strip of the surface edge at place k of the near rows' bucket sort.
+  Strip make_strip(std::size_t k) const;
 
   std::size_t pixel(int i, int j) const {
     return static_cast<std::size_t>(j) * scene_.camera.frame.width + static_cast<std::size_t>(i);
   }
 
-  /// The factor that takes m.y·sy + m.z to a pixel x offset: the line's
-  /// screen x is sx = −(m.y·sy + m.z)/m.x and its pixel x is
-  /// (sx/(a·h) + 1)·width/2. Made once per edge, so that a row costs no
-  /// division (tens of thousands of shadow edges cross each row).
-  double row_scale(const Vec3& m) const {
-    const geometry::CameraFrame& frame = scene_.camera.frame;
-    return -(0.5 * frame.width) / (frame.a * frame.h * m.x);
-  }
+  /// detail::row_scale of this render's camera.
+  double row_scale(const Vec3& m) const { return detail::row_scale(scene_.camera, m); }
 
   /// Pixel x at which an edge with line m and row_scale c crosses row j's
   /// centre line, from the edge's homogeneous line (well conditioned even
@@ -154,8 +130,8 @@ class Band {
   /// Row j's visible points; crossings_[0, carried) were active on row j - 1.
   void scan_row(int j, std::size_t carried);
 
-  /// The shadow pass's edges and strips for the current band, less those of
-  /// shadow polygons behind it.
+  /// The shadow pass's polygons and the surfaces' strips for the current
+  /// band; live_, those of the polygons not behind it.
   void start_shadow_band();
 
   /// The band's shadow polygons, counted against its visible points; then its flags.
@@ -183,6 +159,15 @@ class Band {
   /// Flags the band's pixels whose centre lies too near an edge that matters.
   void flag_near_edges();
 
+  /// The strip's rows in the band: those whose pixel centres lie in it go
+  /// to flag_near_edge.
+  void flag_strip(const Strip& strip);
+
+  /// A pixel whose visible surface may be wrong is decided again in full:
+  /// its light flags say nothing more (uncertain = kSurfaceUncertain,
+  /// light_mask = 0), whichever strip reached it first.
+  void settle_surface_flags();
+
   /// The distance test on the pixels [i0, i1) of row j in edge t's strip.
   void flag_near_edge(const TableEdge& t, int i0, int i1, int j);
 
@@ -207,7 +192,7 @@ class Band {
   double band_depth_bound(int i0, int i1) const;
 
   /// Is shadow polygon `polygon` clearly behind the visible point at every pixel of the current
-  /// band where it could count or flag? Judged once per polygon and band.
+  /// band where it could count or flag? Judged once per polygon and band, and counted.
   bool behind_in_band(std::uint32_t polygon);
 
   /// Whether `polygon` lies clearly behind the band's visible points round it.
@@ -222,13 +207,12 @@ class Band {
   std::uint64_t spans_ = 0;              // spans shaded by this worker
   std::uint64_t skipped_ = 0;            // (polygon, band) pairs it found behind
   HugeVector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
-  HugeVector<ShadowEdge> shadow_edges_;  // shadow edges active in the band, in edge order
-  HugeVector<ShadowEdge> live_;          // those of polygons not behind the band
   int taken_ = 0;                        // bucket rows below this are in the lists
   int next_row_ = -1;                    // where the last chunk ended (-1: none yet)
   std::vector<int> columns_;             // one shadow polygon's crossing columns on the row
-  HugeVector<NearStrip> strips_;         // strips that meet the band
-  HugeVector<NearStrip> band_strips_;    // those not of a shadow polygon behind the band
+  HugeVector<Strip> strips_;             // the surfaces' strips that meet the band
+  HugeVector<ActiveShadow> shadows_;     // shadow polygons whose span meets the band, in order
+  HugeVector<std::uint32_t> live_;       // those not behind the band
   HugeVector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
   HugeVector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
   std::vector<std::uint32_t> surfaces_;  // surfaces inside at the current span
@@ -243,8 +227,6 @@ class Band {
   // depth_bound_[k][i]: the largest bound on an exact visible depth in the
   // band's columns [i, i + 2^k) (-infinity where nothing is seen).
   std::vector<std::vector<double>> depth_bound_;
-  HugeVector<int> cull_band_;        // per polygon: first row of the band last judged, or -1
-  HugeVector<std::uint8_t> culled_;  // per polygon: behind in that band
   // (pixel, polygon): twisted shadow polygons crossed in front of the visible point in the band
   std::vector<std::pair<std::size_t, std::uint32_t>> group_hits_;
 };

@@ -29,43 +29,62 @@ namespace umbra::raster::detail {
 /// arithmetic; the pixels whose answer that can change lie within that
 /// error of the edge's line, so the threshold grows by it on that row only.
 ///
-/// The strips of shadow polygons behind the band are not in band_strips_:
-/// such a polygon matters at none of its pixels (behind_band).
+/// The strips of shadow polygons behind the band are not walked: such a
+/// polygon matters at none of its pixels (behind_band).
 ///
 /// Strip by strip, each over its rows in the band (as scan_shadows walks
-/// polygons): flags are ORs, so the order changes nothing.
+/// polygons): flags are ORs, and settle_surface_flags then makes the
+/// outcome independent of the order, so the order changes nothing.
 void Band::flag_near_edges() {
-  const int width = scene_.camera.frame.width;
-  for (const NearStrip& strip : band_strips_) {
-    const int j0 = std::max(strip.first, band0_), j1 = std::min(strip.last + 1, band1_);
-    for (int j = j0; j < j1; ++j) {
-      const double row_y = j + 0.5;
-      const double x = strip.x0 + row_y * strip.slope;
-      const double x_lo = std::max(x - strip.half_width, strip.x_lo);
-      const double x_hi = std::min(x + strip.half_width, strip.x_hi);
-      // Nearly every strip holds no pixel centre on the row: settle that
-      // with one truncation instead of the clamped ceil and floor below
-      // (software sequences on baseline x86-64, most of this loop's cost).
-      // The columns below, [clamp(ceil(u_lo)), clamp(floor(u_hi) + 1)) with
-      // u = x − 0.5 and clamp to [0, w] (w the width), are empty when
-      // u_hi < 0, u_lo > w − 1 or u_lo > u_hi; otherwise exactly when no
-      // integer lies in [max(u_lo, 0), min(u_hi, w − 1)], i.e. when
-      // floor(min(u_hi, w − 1)), a truncation of a value in [0, w − 1], is
-      // below u_lo. NaN goes on to the whole row.
-      const double u_lo = x_lo - 0.5, u_hi = x_hi - 0.5;
-      if (!std::isnan(u_lo) && !std::isnan(u_hi)) {
-        if (u_hi < 0 || u_lo > width - 1 || u_lo > u_hi) continue;
-        const double last = std::min(u_hi, width - 1.0);
-        if (static_cast<double>(static_cast<int>(last)) < u_lo) continue;
-      }
-      int i0 = first_column(x_lo, width);
-      int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
-      if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
-      if (i0 >= i1) continue;
-      row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
-      flag_near_edge(scene_.edges[strip.edge], i0, i1, j);
-    }
+  for (const Strip& strip : strips_) flag_strip(strip);
+  for (const std::uint32_t polygon : live_) {
+    const ShadowSpan& span = scene_.shadow_spans[polygon];
+    for (std::uint32_t n = span.begin; n < span.end; ++n) flag_strip(scene_.shadow_strips[n]);
   }
+}
+
+void Band::flag_strip(const Strip& strip) {
+  const int width = scene_.camera.frame.width;
+  const int j0 = std::max(strip.first, band0_), j1 = std::min(strip.last + 1, band1_);
+  for (int j = j0; j < j1; ++j) {
+    const double row_y = j + 0.5;
+    const double x = strip.x0 + row_y * strip.slope;
+    const double x_lo = std::max(x - strip.half_width, strip.x_lo);
+    const double x_hi = std::min(x + strip.half_width, strip.x_hi);
+    // Nearly every strip holds no pixel centre on the row: settle that
+    // with one truncation instead of the clamped ceil and floor below
+    // (software sequences on baseline x86-64, most of this loop's cost).
+    // The columns below, [clamp(ceil(u_lo)), clamp(floor(u_hi) + 1)) with
+    // u = x − 0.5 and clamp to [0, w] (w the width), are empty when
+    // u_hi < 0, u_lo > w − 1 or u_lo > u_hi; otherwise exactly when no
+    // integer lies in [max(u_lo, 0), min(u_hi, w − 1)], i.e. when
+    // floor(min(u_hi, w − 1)), a truncation of a value in [0, w − 1], is
+    // below u_lo. NaN goes on to the whole row.
+    const double u_lo = x_lo - 0.5, u_hi = x_hi - 0.5;
+    if (!std::isnan(u_lo) && !std::isnan(u_hi)) {
+      if (u_hi < 0 || u_lo > width - 1 || u_lo > u_hi) continue;
+      const double last = std::min(u_hi, width - 1.0);
+      if (static_cast<double>(static_cast<int>(last)) < u_lo) continue;
+    }
+    int i0 = first_column(x_lo, width);
+    int i1 = clamp_column(std::floor(x_hi - 0.5) + 1, width);
+    if (std::isnan(x_lo) || std::isnan(x_hi)) i0 = 0, i1 = width;  // no bound: every pixel
+    if (i0 >= i1) continue;
+    row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
+    flag_near_edge(scene_.edges[strip.edge], i0, i1, j);
+  }
+}
+
+void Band::settle_surface_flags() {
+  const int width = scene_.camera.frame.width;
+  for (int j = band0_; j < band1_; ++j)
+    for (int i = 0; i < width; ++i) {
+      const std::size_t p = pixel(i, j);
+      if (result_.uncertain[p] & kSurfaceUncertain) {
+        result_.uncertain[p] = kSurfaceUncertain;
+        result_.light_mask[p] = 0;
+      }
+    }
 }
 
 /// The pixels [i0, i1) of row j in the strip of edge e: the distance test.

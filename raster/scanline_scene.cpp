@@ -20,28 +20,27 @@ RowRange active_rows(double y0, double y1, int height) {
 }
 namespace {
 
+/// The surfaces' edges by first row of `range` (shadow polygons' edges go
+/// to the shadow pass polygon by polygon instead, see shadow_spans).
 void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, int height,
                  HugeVector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
-                 HugeVector<int>& last, HugeVector<std::uint8_t>& shadow) {
+                 HugeVector<int>& last) {
+  const auto counted = [&](const TableEdge& e) {
+    return !e.shadow && (e.*range).first <= (e.*range).last;
+  };
   bucket.assign(static_cast<std::size_t>(height) + 2, 0);
   for (const TableEdge& e : edges)
-    if ((e.*range).first <= (e.*range).last) ++bucket[(e.*range).first + 1];
+    if (counted(e)) ++bucket[(e.*range).first + 1];
   for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
   // Made afresh every frame, 1-2 MB each with many lights: whole huge pages.
   reserve_huge(order, bucket[height]);
   reserve_huge(last, bucket[height]);
-  reserve_huge(shadow, bucket[height]);
   order.assign(bucket[height], 0);
   std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
   for (std::uint32_t k = 0; k < edges.size(); ++k)
-    if ((edges[k].*range).first <= (edges[k].*range).last)
-      order[fill[(edges[k].*range).first]++] = k;
+    if (counted(edges[k])) order[fill[(edges[k].*range).first]++] = k;
   last.resize(order.size());
-  shadow.resize(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    last[k] = (edges[order[k]].*range).last;
-    shadow[k] = edges[order[k]].shadow;
-  }
+  for (std::size_t k = 0; k < order.size(); ++k) last[k] = (edges[order[k]].*range).last;
 }
 
 }  // namespace
@@ -176,6 +175,65 @@ void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
   });
 }
 
+/// Every shadow polygon's edges and strips side by side (Scene::shadow_edges,
+/// shadow_strips), its span of rows, and the polygons bucketed by first row.
+void shadow_tables(Scene& scene, std::span<const std::size_t> first_edge, unsigned threads) {
+  const std::size_t polygons = scene.polygons.size();
+  reserve_huge(scene.shadow_spans, polygons);
+  scene.shadow_spans.assign(polygons, ShadowSpan{});
+  std::uint32_t count = 0;
+  for (std::size_t k = 0; k < polygons; ++k) {
+    if (scene.polygons[k].kind != RasterPolygon::Kind::shadow) continue;
+    scene.shadow_spans[k].begin = count;
+    count += static_cast<std::uint32_t>(first_edge[k + 1] - first_edge[k]);
+    scene.shadow_spans[k].end = count;
+  }
+  scene.shadow_edges.resize(count);
+  scene.shadow_strips.resize(count);
+  parallel_blocks(polygons, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      ShadowSpan& span = scene.shadow_spans[k];
+      for (std::uint32_t n = span.begin; n < span.end; ++n) {
+        const auto e = static_cast<std::uint32_t>(first_edge[k] + (n - span.begin));
+        const TableEdge& t = scene.edges[e];
+        scene.shadow_edges[n] = {t.edge->m, row_scale(scene.camera, t.edge->m), e, t.scan.first,
+                                 t.scan.last};
+        scene.shadow_strips[n] = {t.strip_x0,   t.strip_slope, t.strip_half_width, t.strip_x_lo,
+                                  t.strip_x_hi, e,             t.near.first,       t.near.last};
+        // The rows any of its edges is active on or any of its strips meets.
+        for (const RowRange& r : {t.scan, t.near}) {
+          if (r.first > r.last) continue;
+          if (span.first > span.last) {
+            span.first = r.first;
+            span.last = r.last;
+          } else {
+            span.first = std::min(span.first, r.first);
+            span.last = std::max(span.last, r.last);
+          }
+        }
+      }
+    }
+  });
+  const int height = scene.camera.frame.height;
+  std::vector<std::size_t>& bucket = scene.shadow_bucket;
+  bucket.assign(static_cast<std::size_t>(height) + 2, 0);
+  for (const ShadowSpan& span : scene.shadow_spans)
+    if (span.first <= span.last) ++bucket[span.first + 1];
+  for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
+  reserve_huge(scene.shadow_by_row, bucket[height]);
+  reserve_huge(scene.shadow_by_row_last, bucket[height]);
+  scene.shadow_by_row.assign(bucket[height], 0);
+  scene.shadow_by_row_last.assign(bucket[height], 0);
+  std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+  for (std::uint32_t k = 0; k < polygons; ++k) {
+    const ShadowSpan& span = scene.shadow_spans[k];
+    if (span.first > span.last) continue;
+    const std::size_t place = fill[span.first]++;
+    scene.shadow_by_row[place] = k;
+    scene.shadow_by_row_last[place] = span.last;
+  }
+}
+
 /// Input errors are found here, in polygon order, before any work is shared
 /// out: the first bad polygon is the one reported, whatever the threads.
 void check_input(std::span<const RasterPolygon> input, std::size_t lights,
@@ -267,9 +325,10 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
     }
   });
   bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,
-              scene.by_scan_row_last, scene.by_scan_row_shadow);
+              scene.by_scan_row_last);
   bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket,
-              scene.by_near_row_last, scene.by_near_row_shadow);
+              scene.by_near_row_last);
+  shadow_tables(scene, first_edge, threads);
   return scene;
 }
 

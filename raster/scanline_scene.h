@@ -81,6 +81,41 @@ struct TableEdge {
   double strip_x0, strip_slope, strip_half_width, strip_x_lo, strip_x_hi;
 };
 
+/// The factor that takes m.y·sy + m.z to a pixel x offset for an edge with
+/// homogeneous line m: the line's screen x is sx = −(m.y·sy + m.z)/m.x and
+/// its pixel x is (sx/(a·h) + 1)·width/2. Made once per edge, so that a row
+/// costs no division (tens of thousands of shadow edges cross each row).
+inline double row_scale(const CameraSpace& camera, const Vec3& m) {
+  const geometry::CameraFrame& frame = camera.frame;
+  return -(0.5 * frame.width) / (frame.a * frame.h * m.x);
+}
+
+/// An edge's uncertainty strip as the flag pass walks it (TableEdge's
+/// strip_* and near rows, and the edge it belongs to).
+struct Strip {
+  double x0, slope, half_width, x_lo, x_hi;  ///< TableEdge::strip_*
+  std::uint32_t edge;
+  int first, last;  ///< TableEdge::near
+};
+
+/// A shadow polygon's edge as the shadow pass reads it, band after band,
+/// with the polygon's other edges beside it (Scene::shadow_edges): its line,
+/// the factor that takes a row to its crossing (Band::crossing_x), its rows.
+struct ShadowEdge {
+  Vec3 m;    ///< ProjectedEdge::m
+  double c;  ///< -(width/2) / (a·h·m.x), as Band::row_scale
+  std::uint32_t edge;
+  int first, last;  ///< TableEdge::scan
+};
+
+/// Where a shadow polygon's edges and strips lie in Scene::shadow_edges and
+/// Scene::shadow_strips, and the rows on which any of them is active or any
+/// strip meets (empty when first > last).
+struct ShadowSpan {
+  std::uint32_t begin = 0, end = 0;
+  int first = 0, last = -1;
+};
+
 /// Everything the bands share, read-only once built. Not copied: polygons
 /// and the edge table point into edge_store (a move keeps them valid).
 struct Scene {
@@ -101,20 +136,29 @@ struct Scene {
   /// Filled in parallel by prepare; left uninitialized until then (a
   /// trivial type, so no serial zeroing of 100k+ entries first).
   UninitializedVector<TableEdge> edges;
-  HugeVector<std::uint32_t> by_scan_row;  ///< edges sorted by first active row (the y bucket sort)
+  /// The surfaces' edges sorted by first active row (the y bucket sort).
+  HugeVector<std::uint32_t> by_scan_row;
   std::vector<std::size_t>
       scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
   /// scan.last of by_scan_row's edges, in its order: a worker starting a
   /// chunk of rows reads these front to back to find the edges still active,
   /// instead of reaching into the edge table once per edge started above.
   HugeVector<int> by_scan_row_last;
+  /// The surfaces' edges by first row of their strips, likewise.
   HugeVector<std::uint32_t> by_near_row;
   std::vector<std::size_t> near_bucket;
   HugeVector<int> by_near_row_last;  ///< near.last of by_near_row's edges
-  /// 1 where by_scan_row's / by_near_row's edge belongs to a shadow polygon:
-  /// the surface pass and the shadow pass take their own edges from the
-  /// same buckets.
-  HugeVector<std::uint8_t> by_scan_row_shadow, by_near_row_shadow;
+  /// Shadow polygons go to the shadow pass whole, not edge by edge: each
+  /// polygon's edges and strips side by side (ShadowSpan::begin .. end), so
+  /// a band's lists hold polygons and no edge is copied band after band.
+  UninitializedVector<ShadowEdge> shadow_edges;
+  UninitializedVector<Strip> shadow_strips;
+  HugeVector<ShadowSpan> shadow_spans;  ///< per polygon (a surface's is empty)
+  /// Shadow polygons by the first row of their span, in polygon order
+  /// within a row; with each one's last row, as for the edges.
+  HugeVector<std::uint32_t> shadow_by_row;
+  std::vector<std::size_t> shadow_bucket;
+  HugeVector<int> shadow_by_row_last;
   /// Per polygon: a shadow polygon whose depth may be bounded over a band
   /// of rows (band_cull); others are always scanned.
   HugeVector<std::uint8_t> cullable;

@@ -12,39 +12,31 @@
 namespace umbra::raster::detail {
 
 /// The shadow pass's lists for the current band, once its visible points
-/// are known: shadow_edges_ gets the edges that start in the band and
-/// loses those that ended before it (kept in edge order, which groups each
-/// polygon's edges together), strips_ likewise; then live_ and
-/// band_strips_ keep only what belongs to no shadow polygon found behind
-/// the band (behind_in_band), which is most of them: the rows of the band
-/// walk these shorter lists.
+/// are known: shadows_ gets the shadow polygons whose span starts in the
+/// band and loses those whose span ended before it (kept in polygon order,
+/// which is the order of their edges in the scene), strips_ likewise with
+/// the surfaces' strips; then live_ keeps the polygons not found behind the
+/// band (behind_in_band), most of them. A shadow polygon's edges and
+/// strips are read from the scene where it is scanned, never copied: with
+/// many lights a band's lists hold thousands of polygons, whose edges were
+/// copied twice a band when the lists held edges.
 void Band::start_shadow_band() {
   const int b0 = band0_;
-  std::erase_if(shadow_edges_, [&](const ShadowEdge& e) { return e.last < b0; });
-  std::erase_if(strips_, [&](const NearStrip& e) { return e.last < b0; });
-  const std::size_t carried = shadow_edges_.size();
+  std::erase_if(shadows_, [&](const ActiveShadow& a) { return a.last < b0; });
+  std::erase_if(strips_, [&](const Strip& e) { return e.last < b0; });
+  const std::size_t carried = shadows_.size();
   for (; taken_ < band1_; ++taken_) {
-    for (std::size_t k = scene_.scan_bucket[taken_]; k < scene_.scan_bucket[taken_ + 1]; ++k)
-      if (scene_.by_scan_row_shadow[k]) shadow_edges_.push_back(make_shadow_edge(k));
+    for (std::size_t k = scene_.shadow_bucket[taken_]; k < scene_.shadow_bucket[taken_ + 1]; ++k)
+      shadows_.push_back({scene_.shadow_by_row[k], scene_.shadow_by_row_last[k]});
     for (std::size_t k = scene_.near_bucket[taken_]; k < scene_.near_bucket[taken_ + 1]; ++k)
       strips_.push_back(make_strip(k));
   }
-  const auto middle = shadow_edges_.begin() + static_cast<std::ptrdiff_t>(carried);
-  std::sort(middle, shadow_edges_.end(), by_edge);
-  std::inplace_merge(shadow_edges_.begin(), middle, shadow_edges_.end(), by_edge);
+  const auto middle = shadows_.begin() + static_cast<std::ptrdiff_t>(carried);
+  std::sort(middle, shadows_.end(), by_polygon);
+  std::inplace_merge(shadows_.begin(), middle, shadows_.end(), by_polygon);
   live_.clear();
-  for (std::size_t k = 0; k < shadow_edges_.size();) {
-    const std::uint32_t polygon = shadow_edges_[k].polygon;
-    std::size_t end = k;
-    while (end < shadow_edges_.size() && shadow_edges_[end].polygon == polygon) ++end;
-    if (!behind_in_band(polygon))
-      live_.insert(live_.end(), shadow_edges_.begin() + static_cast<std::ptrdiff_t>(k),
-                   shadow_edges_.begin() + static_cast<std::ptrdiff_t>(end));
-    k = end;
-  }
-  band_strips_.clear();
-  for (const NearStrip& strip : strips_)
-    if (!(strip.shadow && behind_in_band(strip.polygon))) band_strips_.push_back(strip);
+  for (const ActiveShadow& a : shadows_)
+    if (!behind_in_band(a.polygon)) live_.push_back(a.polygon);
 }
 
 /// The band's shadow polygons (Bergeron's saving: a shadow polygon behind
@@ -64,10 +56,8 @@ void Band::start_shadow_band() {
 /// visits changes no value.
 void Band::scan_shadows() {
   const int width = scene_.camera.frame.width;
-  for (std::size_t k = 0; k < live_.size();) {
-    const std::uint32_t polygon = live_[k].polygon;
-    std::size_t end = k;
-    while (end < live_.size() && live_[end].polygon == polygon) ++end;
+  for (const std::uint32_t polygon : live_) {
+    const ShadowSpan& span = scene_.shadow_spans[polygon];
     const ProjectedPolygon& shadow = scene_.polygons[polygon];
     for (int j = band0_; j < band1_; ++j) {
       const double sy = row_sy_[j - band0_];
@@ -76,8 +66,8 @@ void Band::scan_shadows() {
       int two[2];
       std::size_t found = 0;
       columns_.clear();
-      for (std::size_t n = k; n < end; ++n) {
-        const ShadowEdge& e = live_[n];
+      for (std::uint32_t n = span.begin; n < span.end; ++n) {
+        const ShadowEdge& e = scene_.shadow_edges[n];
         if (e.first > j || e.last < j) continue;
         const int column = first_column(crossing_x(e.m, e.c, e.edge, j, sy), width);
         if (found < 2) two[found] = column;
@@ -101,11 +91,11 @@ void Band::scan_shadows() {
                        m + 1 < columns_.size() ? columns_[m + 1] : width, j);
       }
     }
-    k = end;
   }
   count_groups();
   flag_near_edges();
   for (int j = band0_; j < band1_; ++j) flag_degenerate(j);
+  settle_surface_flags();
 }
 
 /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
@@ -217,13 +207,9 @@ double Band::band_depth_bound(int i0, int i1) const {
 /// pixel of the current band where it could count or flag? Judged once
 /// per polygon and band.
 bool Band::behind_in_band(std::uint32_t polygon) {
-  if (!scene_.cullable[polygon]) return false;
-  if (cull_band_[polygon] != band0_) {
-    cull_band_[polygon] = band0_;
-    culled_[polygon] = behind_band(polygon);
-    skipped_ += culled_[polygon];
-  }
-  return culled_[polygon] != 0;
+  if (!scene_.cullable[polygon] || !behind_band(polygon)) return false;
+  ++skipped_;
+  return true;
 }
 
 /// Bergeron's saving, a band of rows at a time: a shadow polygon behind the
