@@ -398,6 +398,36 @@ TEST(ScanlineUncertainty, PixelCentreOnAnEdgeIsFlaggedAndFarPixelsAreNot) {
   EXPECT_EQ(scanline_render(frame, hidden, 1, 1).uncertain[j * 16 + i], 0);
 }
 
+TEST(ScanlineUncertainty, SurfaceDoubtClearsTheLightFlagsWhateverReachedThePixelFirst) {
+  // A wall whose edge passes exactly through pixel (12, 5)'s ray, and over
+  // it a shadow polygon a hair in front (too close to call, so the shadow
+  // pass flags its light before the strips run): the visible surface is in
+  // doubt, so the pixel is decided again in full and carries no light
+  // flag, whatever flagged it first (both orders of the input).
+  const CameraFrame frame = front_camera();
+  const int i = 12, j = 5;
+  const Vec3 x = frame.eye + 4.0 * geometry::sample_ray(frame, i, j).direction;
+  ASSERT_EQ(x.z, 1.0);
+  const double z = 1 + 1e-10;
+  const RasterPolygon wall =
+      surface({{x.x, -3, 1}, {x.x + 2, -3, 1}, {x.x + 2, 3, 1}, {x.x, 3, 1}}, 1);
+  const RasterPolygon side =
+      shadow({{x.x - 1, -3, z}, {x.x + 2, -3, z}, {x.x + 2, 3, z}, {x.x - 1, 3, z}}, 1, 1);
+  const RasterPolygon back = surface(square_z(-40, -40, 40, 40, -1), 2);
+  for (const bool shadow_first : {false, true}) {
+    const std::vector<RasterPolygon> polygons = shadow_first
+                                                    ? std::vector<RasterPolygon>{side, back, wall}
+                                                    : std::vector<RasterPolygon>{back, wall, side};
+    const ScanlineResult r = scanline_render(frame, polygons, 2, 1);
+    EXPECT_EQ(r.uncertain[j * 16 + i], kSurfaceUncertain) << shadow_first;
+    EXPECT_EQ(r.light_mask[j * 16 + i], 0u) << shadow_first;
+    // Two pixels right, inside the wall, only the shadow polygon's depth
+    // is in doubt: its light alone.
+    EXPECT_EQ(r.uncertain[j * 16 + i + 2], kLightsUncertain) << shadow_first;
+    EXPECT_EQ(r.light_mask[j * 16 + i + 2], light_bit(1)) << shadow_first;
+  }
+}
+
 TEST(ScanlineUncertainty, TwoSurfacesAtTheSameDepthAreFlagged) {
   const CameraFrame frame = front_camera();
   const std::vector<RasterPolygon> polys{surface(square_z(-2, -2, 2, 2, 0), 1),
