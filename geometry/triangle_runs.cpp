@@ -51,7 +51,8 @@ TriangleRuns triangle_runs(const Model& model, std::span<const PolygonSurface> s
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;  // (code, polygon)
   keyed.reserve(runs.order.size());
-  for (const std::uint32_t p : runs.order) keyed.push_back({morton(polygon_boxes[p].centre(), all), p});
+  for (const std::uint32_t p : runs.order)
+    keyed.push_back({morton(polygon_boxes[p].centre(), all), p});
   std::sort(keyed.begin(), keyed.end());
   runs.boxes.resize((keyed.size() + TriangleRuns::kRun - 1) / TriangleRuns::kRun);
   for (std::size_t k = 0; k < keyed.size(); ++k) {

@@ -4,7 +4,7 @@
 // unread (distance_lower_bound in volume_reach.h). The polygons are put in
 // Morton order of their boxes' centres first, so a run's box is small
 // whatever order the file kept them in (scanned meshes keep none). Made
-// once per model (model_tables.h), asked by every light.
+// once per casting model by the volume builder, asked by every light.
 #include <geometry/bvh.h>
 #include <geometry/polygon_surface.h>
 #include <geometry/scene.h>

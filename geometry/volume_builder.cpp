@@ -238,8 +238,9 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
   // 8-10 ms on refined_elephant's 89k triangles), so with fewer point
   // lights each light scans in full. Both give the same value.
   share.runs.resize(scene.models.size());
-  const auto point_lights = std::count_if(scene.lights.begin(), scene.lights.end(),
-                                          [](const Light& l) { return l.type == LightType::point; });
+  const auto point_lights =
+      std::count_if(scene.lights.begin(), scene.lights.end(),
+                    [](const Light& l) { return l.type == LightType::point; });
   if (point_lights >= 4)
     parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
       if (scene.models[mi].casts_shadows)

@@ -185,9 +185,8 @@ double far_end_margin(const Box& bounds) {
   return kMargin * length(bounds.hi - bounds.lo) + 1e-12 * magnitude;
 }
 
-std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds,
-                                            double margin, const Vec3& a, const Vec3& b,
-                                            double k_limit) {
+std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds, double margin,
+                                            const Vec3& a, const Vec3& b, double k_limit) {
   const bool point = light.type == LightType::point;
   const Vec3 da = point ? a - light.position : light.direction;
   const Vec3 db = point ? b - light.position : light.direction;

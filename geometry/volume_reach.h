@@ -72,9 +72,8 @@ double extrusion_factor(const Light& light, const LightReach& reach, double dist
 struct FarEdge {
   Vec3 a, b;
 };
-std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds,
-                                            double margin, const Vec3& a, const Vec3& b,
-                                            double k_limit);
+std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds, double margin,
+                                            const Vec3& a, const Vec3& b, double k_limit);
 
 /// The margin by which far_edge_leaving_box clears `bounds`: 10^-6 of its
 /// diagonal, plus far more than the rounding of coordinates of the box's

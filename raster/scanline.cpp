@@ -1,13 +1,15 @@
 // Bouknight's scanline algorithm with Crow's shadow polygons in the same
 // y sort (Bergeron 1986, "Displaying shadows in image space"):
 //   1. every polygon goes to camera space, is clipped at z = z_near and
-//      projected; a y bucket sort of the edges by their first scanline
+//      projected; a y bucket sort of the surfaces' edges by their first
+//      scanline, and of the shadow polygons, whole, by theirs
 //      (scanline_scene.cpp, projected_polygon.cpp);
 //   2. rows go to workers in bands of 8 rows, each worker mostly down its
 //      own run of bands (band_scheduler.h, scanline_band.cpp); active lists
-//      kept by scanline coherence carry
-//      each edge's hot data inline, since with many lights tens of
-//      thousands of shadow edges cross every row;
+//      kept by scanline coherence: the surfaces' edges with their hot data
+//      inline, the shadow polygons by number, their edges laid side by side
+//      in the scene, since with many lights tens of thousands of shadow
+//      edges cross every row;
 //   3. a band's surfaces first (scanline_surfaces.cpp): crossings x-sorted
 //      by insertion sort (nearly sorted from the previous line), spans
 //      between consecutive crossings, each surface toggled even-odd; in each

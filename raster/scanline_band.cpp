@@ -77,8 +77,8 @@ void Band::activate(std::size_t k) {
 Strip Band::make_strip(std::size_t k) const {
   const std::uint32_t e = scene_.by_near_row[k];
   const TableEdge& t = scene_.edges[e];
-  return {t.strip_x0,   t.strip_slope, t.strip_half_width, t.strip_x_lo,
-          t.strip_x_hi, e,             t.near.first,       t.near.last};
+  return {t.strip_x0, t.strip_slope, t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
+          e,          t.near.first,  t.near.last};
 }
 
 }  // namespace umbra::raster::detail

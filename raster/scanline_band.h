@@ -68,10 +68,10 @@ class Band {
   void run(int row0, int row1);
 
  private:
-  /// An edge in the active edge list. What every row reads is copied in
-  /// (the line, the polygon, its kind, the last row) so that the walk over
-  /// tens of thousands of shadow edges per row reads one array front to back
-  /// instead of missing the cache on the edge table and the polygons.
+  /// A surface's edge in the active edge list. What every row reads is
+  /// copied in (the line, the polygon, the last row) so that the walk over
+  /// the row's edges reads one array front to back instead of missing the
+  /// cache on the edge table and the polygons.
   struct Crossing {
     double x;
     Vec3 m;    ///< the edge's homogeneous line (ProjectedEdge::m)
@@ -150,8 +150,8 @@ class Band {
   /// [i0, i1) of row j. Inlined into scan_shadows: called per polygon and
   /// row, millions of times a frame, for about a pixel each, where a call's
   /// register saves cost a fifth of its work.
-  [[gnu::always_inline]] inline void shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, int i0, int i1,
-                           int j);
+  [[gnu::always_inline]] inline void shade_shadow(const ProjectedPolygon& shadow,
+                                                  std::uint32_t polygon, int i0, int i1, int j);
 
   /// The band's twisted groups whose flag changed in front of the visible point.
   void count_groups();

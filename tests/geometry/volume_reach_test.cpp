@@ -74,8 +74,8 @@ TEST(FarEdgeLeavingBox, RaysThatLeaveThroughDifferentFacesKeepTheReach) {
   const Light light = point_light({0, 1, 0});
   // One ray leaves through x = 3 only, the other through z = 3 only: no one
   // face separates the far edge from the box.
-  EXPECT_FALSE(far_edge_leaving_box(light, bounds, far_end_margin(bounds), {1, 1, 0}, {0, 1, 1},
-                                    100));
+  EXPECT_FALSE(
+      far_edge_leaving_box(light, bounds, far_end_margin(bounds), {1, 1, 0}, {0, 1, 1}, 100));
 }
 
 TEST(FarEdgeLeavingBox, NothingLongerThanTheLimitNorFromTheLightItself) {
@@ -118,8 +118,9 @@ TEST(FarEdgeLeavingBox, EveryAnswerLeavesThroughOneFaceOnRandomEdges) {
   int found = 0, refused = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const bool point = trial % 4 != 0;
-    const Light light = point ? point_light(inside())
-                              : directional_light({unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5});
+    const Light light =
+        point ? point_light(inside())
+              : directional_light({unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5});
     const Vec3 a = inside();
     // Mostly short edges, as in meshes; some across the box.
     Vec3 b = trial % 3 == 0 ? inside() : a + 0.05 * Vec3{unit(rng), unit(rng), unit(rng)};

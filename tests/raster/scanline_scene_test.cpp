@@ -28,8 +28,9 @@ TEST(DepthFloor, BoundsTheDepthAndItsErrorAtEveryPixelCentreOfTheBox) {
     // Long thin quads like side polygons, some nearly edge-on to the eye.
     const Vec3 a{unit(rng), 0.5 + 0.5 * unit(rng), unit(rng)};
     const Vec3 b = a + 0.05 * Vec3{unit(rng), unit(rng), unit(rng)};
-    const Vec3 away = trial % 4 == 0 ? normalize(a - setup.eye) + 0.3 * Vec3{unit(rng), unit(rng), unit(rng)}
-                                     : Vec3{unit(rng), -1.5, unit(rng)};
+    const Vec3 away = trial % 4 == 0
+                          ? normalize(a - setup.eye) + 0.3 * Vec3{unit(rng), unit(rng), unit(rng)}
+                          : Vec3{unit(rng), -1.5, unit(rng)};
     RasterPolygon quad;
     quad.vertices = {a, b, b + 0.8 * away, a + 0.8 * away};
     quad.kind = RasterPolygon::Kind::shadow;
@@ -40,16 +41,15 @@ TEST(DepthFloor, BoundsTheDepthAndItsErrorAtEveryPixelCentreOfTheBox) {
     if (polygon.status != ProjectedPolygon::Status::active) continue;
     const double y0 = std::max(polygon.bbox_y0 - 1, 0.0);
     const double y1 = std::min(polygon.bbox_y1 + 1, static_cast<double>(frame.height));
-    const DepthFloor box = depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1,
-                                       y0, y1);
+    const DepthFloor box =
+        depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1, y0, y1);
     if (box.i0 > box.i1 || !std::isfinite(box.error)) continue;
     ++boxes;
     grazing += trial % 4 == 0;
     for (int j = 0; j < frame.height; ++j) {
       if (!(j + 0.5 >= y0 && j + 0.5 <= y1)) continue;
       for (int i = box.i0; i <= box.i1; ++i) {
-        const Vec3 d =
-            camera.to_camera_direction(geometry::sample_ray(frame, i, j).direction);
+        const Vec3 d = camera.to_camera_direction(geometry::sample_ray(frame, i, j).direction);
         const double t = polygon.depth(d);
         const double first =
             polygon.depth_error_at(d, (std::abs(t) * length(d) + polygon.p0_length) * (1 + 1e-9));
