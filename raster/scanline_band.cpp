@@ -70,15 +70,14 @@ void Band::run(int row0, int row1) {
 void Band::activate(std::size_t k) {
   const std::uint32_t e = scene_.by_scan_row[k];
   const TableEdge& t = scene_.edges[e];
-  crossings_.push_back({0, t.edge->m, row_scale(t.edge->m), e, t.edge->polygon, t.scan.last});
+  crossings_.push_back(
+      {0, t.edge->m, row_scale(scene_.camera, t.edge->m), e, t.edge->polygon, t.scan.last});
 }
 
 /// The strip of the surface edge at place k of the near rows' bucket sort.
 Strip Band::make_strip(std::size_t k) const {
   const std::uint32_t e = scene_.by_near_row[k];
-  const TableEdge& t = scene_.edges[e];
-  return {t.strip_x0, t.strip_slope, t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
-          e,          t.near.first,  t.near.last};
+  return strip_of(scene_.edges[e], e);
 }
 
 }  // namespace umbra::raster::detail

@@ -100,9 +100,6 @@ class Band {
     return static_cast<std::size_t>(j) * scene_.camera.frame.width + static_cast<std::size_t>(i);
   }
 
-  /// detail::row_scale of this render's camera.
-  double row_scale(const Vec3& m) const { return detail::row_scale(scene_.camera, m); }
-
   /// Pixel x at which an edge with line m and row_scale c crosses row j's
   /// centre line, from the edge's homogeneous line (well conditioned even
   /// when an endpoint was clipped far off screen): (m.y·sy + m.z)·c +

@@ -198,9 +198,7 @@ void shadow_tables(Scene& scene, std::span<const std::size_t> first_edge, unsign
         const TableEdge& t = scene.edges[e];
         scene.shadow_edges[n] = {t.edge->m, row_scale(scene.camera, t.edge->m), e, t.scan.first,
                                  t.scan.last};
-        scene.shadow_strips[n] = {t.strip_x0,   t.strip_slope, t.strip_half_width,
-                                  t.strip_x_lo, t.strip_x_hi,  e,
-                                  t.near.first, t.near.last};
+        scene.shadow_strips[n] = strip_of(t, e);
         // The rows any of its edges is active on or any of its strips meets.
         for (const RowRange& r : {t.scan, t.near}) {
           if (r.first > r.last) continue;

@@ -98,6 +98,12 @@ struct Strip {
   int first, last;  ///< TableEdge::near
 };
 
+/// The strip of edge `e` of the table, whose entry is `t`.
+inline Strip strip_of(const TableEdge& t, std::uint32_t e) {
+  return {t.strip_x0, t.strip_slope, t.strip_half_width, t.strip_x_lo, t.strip_x_hi,
+          e,          t.near.first,  t.near.last};
+}
+
 /// A shadow polygon's edge as the shadow pass reads it, band after band,
 /// with the polygon's other edges beside it (Scene::shadow_edges): its line,
 /// the factor that takes a row to its crossing (Band::crossing_x), its rows.

@@ -62,10 +62,10 @@ void Band::scan_shadows() {
     for (int j = band0_; j < band1_; ++j) {
       const double sy = row_sy_[j - band0_];
       // A side polygon is convex: two crossings a row, kept in registers;
-      // any more (a clipped or general polygon) go through columns_.
+      // any more (a clipped or general polygon) go through columns_, which
+      // the third crossing refills from the first two.
       int two[2];
       std::size_t found = 0;
-      columns_.clear();
       for (std::uint32_t n = span.begin; n < span.end; ++n) {
         const ShadowEdge& e = scene_.shadow_edges[n];
         if (e.first > j || e.last < j) continue;
