@@ -1,14 +1,13 @@
-#include <geometry/exact_predicates.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
+#include <geometry/exact_predicates.h>
 
 namespace umbra::geometry {
 namespace {
 
 using Interval = CGAL::Interval_nt<false>;  // needs the rounding guard below
-using Exact = CGAL::Mpzf;                    // exact +, -, × on doubles
+using Exact = CGAL::Mpzf;                   // exact +, -, × on doubles
 
 template <class T>
 struct Tag {
@@ -89,15 +88,16 @@ Sign orientation_at_hit(const Vec3& a, const HPoint& b, const HPoint& c, const S
   const Sign g_hit = orientation(p.hit0, HPoint::point(p.hit1), HPoint::point(p.hit2),
                                  HPoint::at_infinity(p.direction));
   return filtered_sign([&](auto tag) {
-    using NT = typename decltype(tag)::type;
-    const V3<NT> bb = slot<NT>(b, a), cc = slot<NT>(c, a);
-    const NT f_e = det(bb, cc, sub<NT>(p.eye, a));
-    const NT f_lin = det(bb, cc, vec<NT>(p.direction));
-    const V3<NT> h1 = sub<NT>(p.hit1, p.hit0), h2 = sub<NT>(p.hit2, p.hit0);
-    const NT hit_e = det(h1, h2, sub<NT>(p.eye, p.hit0));
-    const NT hit_g = det(h1, h2, vec<NT>(p.direction));
-    return f_e * hit_g - hit_e * f_lin;
-  }) * g_hit;
+           using NT = typename decltype(tag)::type;
+           const V3<NT> bb = slot<NT>(b, a), cc = slot<NT>(c, a);
+           const NT f_e = det(bb, cc, sub<NT>(p.eye, a));
+           const NT f_lin = det(bb, cc, vec<NT>(p.direction));
+           const V3<NT> h1 = sub<NT>(p.hit1, p.hit0), h2 = sub<NT>(p.hit2, p.hit0);
+           const NT hit_e = det(h1, h2, sub<NT>(p.eye, p.hit0));
+           const NT hit_g = det(h1, h2, vec<NT>(p.direction));
+           return f_e * hit_g - hit_e * f_lin;
+         }) *
+         g_hit;
 }
 
 Sign fan_orientation(std::span<const Vec3> polygon, const HPoint& x) {
@@ -170,6 +170,13 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
                          K::Point_3(c.x, c.y, c.z));
 }
 
+Sign angle_sign(const Vec3& o, const Vec3& a, const Vec3& b) {
+  return filtered_sign([&](auto tag) {
+    using NT = typename decltype(tag)::type;
+    return dot3(sub<NT>(a, o), sub<NT>(b, o));
+  });
+}
+
 }  // namespace umbra::geometry
 
 namespace umbra::geometry {
@@ -191,6 +198,17 @@ bool parallel(const Vec3& u, const Vec3& v) {
            }) == Sign::zero;
   };
   return zero(u.y, u.z, v.y, v.z) && zero(u.z, u.x, v.z, v.x) && zero(u.x, u.y, v.x, v.y);
+}
+
+bool parallel_to(const Vec3& a, const Vec3& b, const Vec3& d) {
+  // (b − a) × d = 0, component by component, the differences exact.
+  auto zero = [&](int i, int j) {
+    return filtered_sign([&](auto tag) {
+             using NT = typename decltype(tag)::type;
+             return (NT(b[i]) - NT(a[i])) * NT(d[j]) - (NT(b[j]) - NT(a[j])) * NT(d[i]);
+           }) == Sign::zero;
+  };
+  return zero(1, 2) && zero(2, 0) && zero(0, 1);
 }
 
 }  // namespace umbra::geometry

@@ -85,6 +85,10 @@ Sign compare_projection_to_hit(const Vec3& eye, const Vec3& d, const Vec3& v, co
 /// True when a, b, c lie on one line (exact).
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// sign((a - o)·(b - o)): POSITIVE when the angle a-o-b is acute, ZERO when
+/// it is right (or a or b is o), NEGATIVE when it is obtuse.
+Sign angle_sign(const Vec3& o, const Vec3& a, const Vec3& b);
+
 }  // namespace umbra::geometry
 
 namespace umbra::geometry {
@@ -95,4 +99,9 @@ double ray_plane_parameter(const Vec3& eye, const Vec3& d, const Vec3& a, const 
                            const Vec3& c);
 /// True when directions u and v are parallel (or one is zero), exactly.
 bool parallel(const Vec3& u, const Vec3& v);
+/// True when the segment from a to b runs parallel to direction d (or
+/// a == b, or d is zero), exactly: (b − a) × d = 0 with b − a taken exactly,
+/// which parallel(b − a, d) does not do (the difference of two doubles is
+/// rounded).
+bool parallel_to(const Vec3& a, const Vec3& b, const Vec3& d);
 }  // namespace umbra::geometry

@@ -48,7 +48,7 @@ template <class Start>
 bool touches_edge(const Vec3& u, const Vec3& v, const HPoint& light, const Start& s) {
   const HPoint hv = HPoint::point(v);
   if (s.limit(u, hv, light) != Sign::zero) return false;
-  if (light.finite ? collinear(u, v, light.v) : parallel(v - u, light.v)) {
+  if (light.finite ? collinear(u, v, light.v) : parallel_to(u, v, light.v)) {
     // The light is on the edge's line (or the rays towards it run along it):
     // the segment meets that line only at L.
     if (!light.finite) return false;

@@ -27,16 +27,21 @@ enum class ShadowPolygonType : std::uint8_t {
 /// vertices a, b, b', a' with x' = x + k·(x - L) for one k > 0 per model
 /// (FarEnds::past_reach), or with a k_x per far vertex that ends the side
 /// just past the scene's bounding box (FarEnds::leaving_bounds,
-/// volume_builder.h); its exact support is the plane through L, a and b,
-/// and decisions are taken on that ideal geometry (the wedge from a, b away
-/// from L), not on the rounded far vertices. For a directional light
-/// travelling along D, x' = x + k·D.
+/// volume_builder.h), or — when L nearly touches the model — a, b, far(b),
+/// [far(F)], far(a) on a sphere about L (sphere_ends.h); its exact support
+/// is the plane through L, a and b, and decisions are taken on that ideal
+/// geometry (the wedge from a, b away from L), not on the rounded far
+/// vertices. For a directional light travelling along D, x' = x + k·D.
+/// A far cap (type 3) on a sphere comes as several triangles per fan
+/// triangle of its polygon.
 struct ShadowPolygon {
   std::vector<Vec3> vertices;
   std::uint32_t light = 0;
   std::uint32_t model = 0;
   std::uint32_t polygon = 0;  ///< source polygon within its model
-  /// type 2: the contour edge is polygon's edge (edge, edge + 1 mod n).
+  /// type 2: the contour edge is polygon's edge (edge, edge + 1 mod n); for
+  /// a side of a twisted polygon's own volume, edge >= n names the fan
+  /// diagonal (v0, v_k) with k = edge - n + 2 (volume_builder.cpp).
   std::uint32_t edge = 0;
   ShadowPolygonType type = ShadowPolygonType::side;
   std::int32_t nb_c = 0;
@@ -73,6 +78,9 @@ struct VolumeStats {
   std::uint64_t culled_polygons = 0;
   /// Models whose volumes end at the sphere rather than past the scene.
   std::uint64_t truncated_models = 0;
+  /// Models the light is too close to for the model scaled about it: their
+  /// far ends lie on a sphere about the light (sphere_ends.h).
+  std::uint64_t sphere_ended_models = 0;
   /// Bytes the light's shadow polygons take (struct and vertices), and what
   /// Crow's all-edges volumes extruded past the scene would take.
   std::uint64_t bytes = 0;

@@ -180,6 +180,13 @@ double extrusion_factor(const Light& light, const LightReach& reach, double dist
   return std::max(reach.radius * (1 + kMargin) / distance - 1, kMargin);
 }
 
+bool ends_on_sphere(const Light& light, double distance, double k) {
+  constexpr double kLargestUniformFactor = 1e6;
+  return light.type == LightType::point && (!(distance > 0) || !(k <= kLargestUniformFactor));
+}
+
+double sphere_radius(const LightReach& reach) { return 2 * reach.radius * (1 + kMargin); }
+
 double far_end_margin(const Box& bounds) {
   const double magnitude = std::max(max_abs(bounds.lo), max_abs(bounds.hi));
   return kMargin * length(bounds.hi - bounds.lo) + 1e-12 * magnitude;

@@ -75,6 +75,20 @@ struct FarEdge {
 std::optional<FarEdge> far_edge_leaving_box(const Light& light, const Box& bounds, double margin,
                                             const Vec3& a, const Vec3& b, double k_limit);
 
+/// Whether a point light's far ends for a model at distance >= `distance`
+/// (distance_lower_bound) with extrusion factor `k` go on a sphere about
+/// the light (sphere_ends.h) instead of the model scaled by 1 + k: when the
+/// light is too close to the model for a distance above rounding to be
+/// known (distance 0), or so close that k > 10^6 would put far vertices a
+/// million reaches away, where their rounding (and every error bound the
+/// renderer derives from their magnitude) is no longer small. Never for a
+/// directional light, whose far ends are a translation.
+bool ends_on_sphere(const Light& light, double distance, double k);
+
+/// The radius of that sphere: twice the reach, which every far chord and
+/// cap piece then clears (sphere_ends.h).
+double sphere_radius(const LightReach& reach);
+
 /// The margin by which far_edge_leaving_box clears `bounds`: 10^-6 of its
 /// diagonal, plus far more than the rounding of coordinates of the box's
 /// magnitude.

@@ -2,7 +2,6 @@
 // degenerate input (coplanar, collinear, points at infinity, huge and tiny
 // coordinates). The reference below computes with CGAL::Exact_rational.
 #include <geometry/exact_predicates.h>
-
 #include <gtest/gtest.h>
 #include <tests/geometry/rational_vec.h>
 
@@ -79,7 +78,8 @@ TEST(Orientation, NearlyCoplanarPointsNeedTheExactFallback) {
   // d is one ulp off the plane z = 0.5 through the other three.
   const Vec3 a{0.1, 0.2, 0.5}, b{1e6, 3.3, 0.5}, c{-7.25, 1e-6, 0.5};
   const Vec3 d{0.3, 0.3, std::nextafter(0.5, 1.0)};
-  EXPECT_EQ(orientation(a, b, c, d), reference_orientation(a, HPoint::point(b), HPoint::point(c), HPoint::point(d)));
+  EXPECT_EQ(orientation(a, b, c, d),
+            reference_orientation(a, HPoint::point(b), HPoint::point(c), HPoint::point(d)));
   EXPECT_NE(orientation(a, b, c, d), Sign::zero);
   EXPECT_EQ(orientation(a, b, c, Vec3{0.3, 0.3, 0.5}), Sign::zero);
 }
@@ -170,8 +170,10 @@ TEST(HitDistance, ComparesWithTheRadiusExactly) {
   // the light at (4,3,0) is at distance 3.
   const Vec3 eye{0, 0, 0}, d{1, 0, 0}, a{4, 0, 0}, b{4, 1, 0}, c{4, 0, 1};
   EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, 3.0), Sign::zero);
-  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, std::nextafter(3.0, 4.0)), Sign::negative);
-  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, std::nextafter(3.0, 2.0)), Sign::positive);
+  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, std::nextafter(3.0, 4.0)),
+            Sign::negative);
+  EXPECT_EQ(compare_hit_distance(eye, d, a, b, c, {4, 3, 0}, std::nextafter(3.0, 2.0)),
+            Sign::positive);
 }
 
 TEST(Collinear, AndParallelAreExact) {
@@ -180,6 +182,38 @@ TEST(Collinear, AndParallelAreExact) {
   EXPECT_FALSE(collinear({0, 0, 0}, {0.1, 0.2, 0.3}, {0.3, 0.6, std::nextafter(0.9, 1.0)}));
   EXPECT_TRUE(parallel({1, 2, 3}, {-2, -4, -6}));
   EXPECT_FALSE(parallel({1, 2, 3}, {2, 4, std::nextafter(6.0, 7.0)}));
+}
+
+TEST(ParallelTo, TakesTheSegmentsDifferenceExactly) {
+  // 0.03 - 0.01 and -0.04 + 0.06 round to the same double, so the rounded
+  // difference of these endpoints is parallel to (0, 1, 1); the exact one is
+  // not. The volume builder once dropped this side as flat, and the oracle
+  // took the light for running along the edge (ShadowOracle test below).
+  const Vec3 u{0, 0.01, -0.06}, v{0, 0.03, -0.04}, d{0, 4, 4};
+  ASSERT_TRUE(parallel(v - u, d));
+  EXPECT_FALSE(parallel_to(u, v, d));
+  EXPECT_TRUE(parallel_to({0, 0.5, 0.25}, {0, 4.5, 4.25}, d));
+  EXPECT_TRUE(parallel_to(u, u, d));
+  EXPECT_TRUE(parallel_to(u, v, {0, 0, 0}));
+}
+
+TEST(AngleSign, MatchesRationalArithmeticAtRightAngles) {
+  // (a - o)·(b - o) = 0 exactly for these doubles; one ulp either way tips it.
+  const Vec3 o{0.1, 0.2, 0.3};
+  EXPECT_EQ(angle_sign({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), Sign::zero);
+  EXPECT_EQ(angle_sign({0, 0, 0}, {1, 0, 0}, {std::nextafter(0.0, 1.0), 1, 0}), Sign::positive);
+  EXPECT_EQ(angle_sign({0, 0, 0}, {1, 0, 0}, {std::nextafter(0.0, -1.0), 1, 0}), Sign::negative);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coord(-1, 1);
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 a{coord(rng), coord(rng), coord(rng)}, b{coord(rng), coord(rng), coord(rng)};
+    // b moved to make the angle at o nearly right: doubles cannot tell.
+    const Vec3 ao = a - o;
+    const Vec3 near_right = b - (dot(b - o, ao) / dot(ao, ao)) * ao;
+    const auto exact = (test::q(a) - test::q(o));
+    const auto bo = test::q(near_right) - test::q(o);
+    EXPECT_EQ(angle_sign(o, a, near_right), test::sign_of(test::dot(exact, bo)));
+  }
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // The exact oracle on hand-built scenes whose answers follow from the
 // geometry by hand. y is up; the floor is y = 0.
 #include <geometry/shadow_oracle.h>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace umbra::geometry {
 namespace {
@@ -132,7 +133,7 @@ TEST(ShadowOracle, ConcavePolygonShadowsOnlyItsEvenOddInterior) {
   s.models = {floor_model(),
               quad_model({{2, 1, 1}, {1, 1, 1}, {1, 1, 2}, {0, 1, 2}, {0, 1, 0}, {2, 1, 0}})};
   s.lights = {point_light({1.6, 5, 1.3})};
-  const SampleRay notch{{1.6, 0.5, 1.3}, {0, -1, 0}};   // floor right below the light
+  const SampleRay notch{{1.6, 0.5, 1.3}, {0, -1, 0}};  // floor right below the light
   const SampleRay under_l{{0.5, 0.5, 0.5}, {0, -1, 0}};
   EXPECT_EQ(ask(s, notch).answer.cls, ShadowClass::lit);
   EXPECT_FALSE(ask(s, notch).answer.boundary);
@@ -189,6 +190,25 @@ TEST(ShadowOracle, RayMissingEverythingHasNoHit) {
   const SceneIndex index(s);
   EXPECT_FALSE(first_hit(index, SampleRay{{0, 3, 0}, {0, 1, 0}}));
   EXPECT_FALSE(first_hit(index, SampleRay{{0, 3, 0}, {1, 0, 0}}));
+}
+
+// Before: the touch test asked whether the light ran along the edge with
+// the edge's difference rounded, v - u = (0, 0.02, 0.02) here, parallel to
+// the light's direction (0, 1, 1) although the exact one is not; it then
+// said the ray from the point could not touch the edge, and the ray from
+// S = u + 2^-10·(0, 1, 1) (exact) runs through the vertex u.
+TEST(ShadowOracle, RayThroughAVertexAlongAnEdgeThatRoundsParallelIsATouch) {
+  Scene s;
+  s.models = {quad_model({{0, 0.01, -0.06}, {0, 0.03, -0.04}, {0.1, 0.02, -0.05}})};
+  Light l;
+  l.type = LightType::directional;
+  l.direction = {0, 4, 4};
+  s.lights = {l};
+  const SceneIndex index(s);
+  const double e = std::ldexp(1.0, -10);
+  EXPECT_FALSE(shadowing_polygons(index, Vec3{0, 0.01 + e, -0.06 + e}, 0).has_value());
+  // Off that plane by an ulp, the ray misses the vertex: a definite answer.
+  EXPECT_TRUE(shadowing_polygons(index, Vec3{std::nextafter(0.0, 1.0), 0.01 + e, -0.06 + e}, 0));
 }
 
 }  // namespace

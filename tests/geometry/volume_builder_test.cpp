@@ -109,6 +109,93 @@ TEST(VolumeBuilder, FarEdgesClearTheReachEvenWhereAnEdgePassesCloseToTheLight) {
   EXPECT_GT(nearest_far_edge(v, {0, 0, 0}), corner);
 }
 
+/// The smallest distance from `l` to any edge between far vertices: a
+/// side's vertices from the third on, a far cap's all.
+double nearest_far_chord(const ShadowVolumes& v, const Vec3& l) {
+  double nearest = INFINITY;
+  for (const ShadowPolygon& p : v.polygons) {
+    const std::size_t n = p.vertices.size();
+    if (p.type == ShadowPolygonType::side) {
+      for (std::size_t k = 2; k + 1 < n; ++k)
+        nearest = std::min(nearest, point_segment_distance(l, p.vertices[k], p.vertices[k + 1]));
+    } else if (p.type == ShadowPolygonType::projected_cap) {
+      for (std::size_t k = 0; k < n; ++k)
+        nearest =
+            std::min(nearest, point_segment_distance(l, p.vertices[k], p.vertices[(k + 1) % n]));
+    }
+  }
+  return nearest;
+}
+
+// Issue 16's triangle: the light is its edge's midpoint as doubles compute
+// it, ~1e-17 off the edge. Before, no distance above rounding was known and
+// k fell back to 1: every far end at twice the vertices' distance, and the
+// far edge of the side under the light within ~1e-17 of it. Now the far
+// ends lie on a sphere about the light, every chord beyond the reach.
+TEST(VolumeBuilder, ALightARoundingFromAnEdgeEndsOnASphereBeyondTheReach) {
+  Scene s;
+  s.camera.eye = {-0.3, 0.6, 1.3};
+  Light l;
+  l.position = {0.2, 0.1, -0.15};
+  s.lights = {l};
+  Model m;
+  m.vertices = {{-0.3, 0.2, -0.2}, {0.3, 0.0, 0.1}, {0.1, 0.2, -0.4}};
+  m.polygons = {{0, 1, 2}};
+  s.models = {m};
+  const ShadowVolumes v = build_shadow_volumes(s);
+  EXPECT_EQ(v.stats[0].sphere_ended_models, 1u);
+  double corner = 0;  // of the box round the vertices, eye and light
+  for (int c = 0; c < 8; ++c)
+    corner = std::max(
+        corner,
+        length(Vec3{(c & 1) ? 0.3 : -0.3, (c & 2) ? 0.6 : 0.0, (c & 4) ? 1.3 : -0.4} - l.position));
+  EXPECT_GT(nearest_far_chord(v, l.position), corner);
+  // The sides over (v1, v2), under the light, and over (v0, v1), whose
+  // angle at the light is obtuse too, have the foot's far point: 5
+  // vertices each; the far cap is a fan over 3 corners and those 2 points.
+  std::size_t five = 0, cap_pieces = 0;
+  for (const ShadowPolygon& p : v.polygons) {
+    five += p.type == ShadowPolygonType::side && p.vertices.size() == 5;
+    cap_pieces += p.type == ShadowPolygonType::projected_cap;
+  }
+  EXPECT_EQ(five, 2u);
+  EXPECT_EQ(cap_pieces, 5u);
+}
+
+// A non-planar quad with the light in the plane of its first fan triangle,
+// which it sees edge-on: the quad is on the parity path, and its volume is
+// that of the other fan triangle alone (the first one's is flat): sides on
+// the diagonal v0-v2 (numbered n + 2 - 2 = 4) and the edges v2-v3, v3-v0,
+// and that triangle as both caps.
+TEST(VolumeBuilder, ParityPolygonLeavesOutItsFanTrianglesSeenEdgeOn) {
+  Scene s;
+  s.camera.eye = {0.5, 0.5, 5};
+  Light l;
+  l.position = {2, 3, 0};
+  s.lights = {l};
+  Model m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 1}};
+  m.polygons = {{0, 1, 2, 3}};
+  s.models = {m};
+  const ShadowVolumes v = build_shadow_volumes(s);
+  EXPECT_EQ(v.stats[0].twisted_polygons, 1u);
+  std::vector<std::uint32_t> side_edges;
+  std::size_t near = 0, far = 0;
+  for (const ShadowPolygon& p : v.polygons) {
+    EXPECT_TRUE(p.twisted);
+    if (p.type == ShadowPolygonType::side) side_edges.push_back(p.edge);
+    if (p.type == ShadowPolygonType::model_cap) {
+      ++near;
+      EXPECT_EQ(p.vertices, (std::vector<Vec3>{{0, 0, 0}, {1, 1, 0}, {0, 1, 1}}));
+    }
+    far += p.type == ShadowPolygonType::projected_cap;
+  }
+  std::sort(side_edges.begin(), side_edges.end());
+  EXPECT_EQ(side_edges, (std::vector<std::uint32_t>{2, 3, 4}));
+  EXPECT_EQ(near, 1u);
+  EXPECT_EQ(far, 1u);
+}
+
 TEST(VolumeBuilder, SidesLeavingTheBoundsEndPastItsFloorAndNeedNoCaps) {
   // The lights' ring of the benchmarks: a cube on a floor, lit from above.
   Scene s;
