@@ -27,19 +27,11 @@ struct PointStart {
   Sign limit(const Vec3& a, const HPoint& b, const HPoint& c) const { return side(a, b, c); }
 };
 
-/// Is the finite point x, lying in the plane of (a, b, c), inside the closed triangle?
-bool in_closed_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
-  // Seen along an axis not parallel to the plane, all four points are in 2D.
-  for (const Vec3 e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) {
-    const HPoint axis = HPoint::at_infinity(e);
-    const Sign s0 = orientation(a, HPoint::point(b), HPoint::point(c), axis);
-    if (s0 == Sign::zero) continue;
-    return orientation(a, HPoint::point(b), HPoint::point(x), axis) != -s0 &&
-           orientation(b, HPoint::point(c), HPoint::point(x), axis) != -s0 &&
-           orientation(c, HPoint::point(a), HPoint::point(x), axis) != -s0;
-  }
-  return false;  // zero-area triangle: never asked for
-}
+struct PerturbedStart {
+  const PerturbedPoint& x;
+  Sign side(const Vec3& a, const HPoint& b, const HPoint& c) const { return side_of(a, b, c, x); }
+  Sign limit(const Vec3& a, const HPoint& b, const HPoint& c) const { return side(a, b, c); }
+};
 
 /// Does the limit segment from the start S to the light touch the closed
 /// polygon edge (u, v)? Exact; conservative (yes) only when S, L, u and v are
@@ -123,6 +115,32 @@ Crossing cross(const SceneIndex& index, const IndexedPolygon& poly, const HPoint
 
 }  // namespace
 
+bool in_closed_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
+  // Seen along an axis not parallel to the plane, all four points are in 2D.
+  for (const Vec3 e : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) {
+    const HPoint axis = HPoint::at_infinity(e);
+    const Sign s0 = orientation(a, HPoint::point(b), HPoint::point(c), axis);
+    if (s0 == Sign::zero) continue;
+    return orientation(a, HPoint::point(b), HPoint::point(x), axis) != -s0 &&
+           orientation(b, HPoint::point(c), HPoint::point(x), axis) != -s0 &&
+           orientation(c, HPoint::point(a), HPoint::point(x), axis) != -s0;
+  }
+  return false;  // zero-area triangle: never asked for
+}
+
+Sign side_of(const Vec3& a, const HPoint& b, const HPoint& c, const PerturbedPoint& x) {
+  // orientation(a, b, c, ·) is affine in its last point: its value at
+  // x + δw1 + δ²w2 + δ³w3 is f(x) + δ·f_lin(w1) + δ²·f_lin(w2) + δ³·f_lin(w3),
+  // and f_lin(w) is orientation with w as a point at infinity.
+  Sign s = orientation(a, b, c, HPoint::point(x.x));
+  if (s != Sign::zero) return s;
+  for (const Vec3& w : {x.w1, x.w2, x.w3}) {
+    s = orientation(a, b, c, HPoint::at_infinity(w));
+    if (s != Sign::zero) return s;
+  }
+  return Sign::zero;
+}
+
 Crossing cross_polygon(const SceneIndex& index, const IndexedPolygon& polygon, const HPoint& light,
                        const SamplePoint& p) {
   return cross(index, polygon, light, SampleStart{p});
@@ -131,6 +149,11 @@ Crossing cross_polygon(const SceneIndex& index, const IndexedPolygon& polygon, c
 Crossing cross_polygon(const SceneIndex& index, const IndexedPolygon& polygon, const HPoint& light,
                        const Vec3& x) {
   return cross(index, polygon, light, PointStart{HPoint::point(x)});
+}
+
+Crossing cross_polygon(const SceneIndex& index, const IndexedPolygon& polygon, const HPoint& light,
+                       const PerturbedPoint& x) {
+  return cross(index, polygon, light, PerturbedStart{x});
 }
 
 }  // namespace umbra::geometry

@@ -52,23 +52,60 @@ ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, cons
   return {ShadowClass::lit, hard_boundary || soft_boundary};
 }
 
-std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& index, const Vec3& x,
-                                                             std::uint32_t light_index) {
+namespace {
+
+/// The casting polygons crossed an odd number of times by the segment from
+/// `from` (a finite point or a perturbed one, at `at`) to the light; nullopt
+/// on a touch.
+template <class Start>
+std::optional<std::vector<std::uint32_t>> odd_crossings(const SceneIndex& index, const Vec3& at,
+                                                        const Start& from,
+                                                        std::uint32_t light_index) {
   const HPoint lp = light_point(index.scene().lights[light_index]);
-  if (lp.finite && lp.v == x) return std::nullopt;  // no segment at all
+  if (lp.finite && lp.v == at) return std::nullopt;  // no segment at all
   const double slack = 1e-12 * index.magnitude() + 1e-300;
   std::vector<std::uint32_t> candidates;
-  index.bvh().query_segment(x, lp.v, !lp.finite, slack, candidates);
+  index.bvh().query_segment(at, lp.v, !lp.finite, slack, candidates);
   std::sort(candidates.begin(), candidates.end());
   std::vector<std::uint32_t> odd;
   for (std::uint32_t pi : candidates) {
     const IndexedPolygon& poly = index.polygons()[pi];
     if (!poly.casts_shadows) continue;
-    const Crossing c = cross_polygon(index, poly, lp, x);
+    const Crossing c = cross_polygon(index, poly, lp, from);
     if (c.touches) return std::nullopt;
     if (c.odd) odd.push_back(pi);
   }
   return odd;
+}
+
+}  // namespace
+
+std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& index, const Vec3& x,
+                                                             std::uint32_t light_index) {
+  return odd_crossings(index, x, x, light_index);
+}
+
+std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& index,
+                                                             const PerturbedPoint& x,
+                                                             std::uint32_t light_index) {
+  return odd_crossings(index, x.x, x, light_index);
+}
+
+bool on_casting_surface(const SceneIndex& index, const Vec3& x) {
+  const double slack = 1e-12 * index.magnitude() + 1e-300;
+  std::vector<std::uint32_t> candidates;
+  index.bvh().query_segment(x, x, false, slack, candidates);
+  for (std::uint32_t pi : candidates) {
+    const IndexedPolygon& poly = index.polygons()[pi];
+    if (!poly.casts_shadows) continue;
+    for (const FanTriangle& t : poly.surface.triangles) {
+      const Vec3& a = index.vertex(poly, t.local[0]);
+      const Vec3& b = index.vertex(poly, t.local[1]);
+      const Vec3& c = index.vertex(poly, t.local[2]);
+      if (orientation(a, b, c, x) == Sign::zero && in_closed_triangle(a, b, c, x)) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace umbra::geometry

@@ -2,6 +2,7 @@
 // The exact point-in-shadow query: DESIGN.md's truth, which every render
 // method is judged by.
 #include <geometry/exact_predicates.h>
+#include <geometry/segment_crossing.h>
 #include <geometry/visible_surface.h>
 
 #include <optional>
@@ -42,6 +43,18 @@ ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, cons
 /// and the volume tests ask this of points that are not samples.
 std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& index, const Vec3& x,
                                                              std::uint32_t light);
+
+/// The same from a perturbed point (segment_crossing.h): decided whenever
+/// the light does not lie on a casting polygon's surface. The eye's count
+/// where the segment from the eye itself touches a polygon: well defined
+/// off the volumes' boundaries, and the count at the eye's side of any
+/// boundary it lies on.
+std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& index,
+                                                             const PerturbedPoint& x,
+                                                             std::uint32_t light);
+
+/// Whether x lies on the closed surface of a shadow-casting polygon.
+bool on_casting_surface(const SceneIndex& index, const Vec3& x);
 
 /// The homogeneous position of a light: the point, or for a directional
 /// light travelling along D the point at infinity in direction -D.

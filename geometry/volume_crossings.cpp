@@ -36,6 +36,43 @@ const Bvh& VolumeCrossings::bvh(std::uint32_t light) const {
   return per_light_[light];
 }
 
+namespace {
+
+/// Does the line EP, whose ends lie strictly on two sides of the plane of
+/// the wedge over (u, v), pass inside the wedge? nullopt when it touches an
+/// edge of it. orientation(E, P, x, y) is orientation(E, x, y, P). The
+/// wedge's edges are u→v, v→(away from L), (at infinity), (from
+/// infinity)→u; the rays from u and v away from L give orientation(E, P,
+/// L, v) and orientation(E, P, u, L), and the edge at infinity of a point
+/// light the sign of det[d, v - L, u - L].
+std::optional<bool> line_inside_wedge(const SampleRay& ray, const SamplePoint& p, const Vec3& u,
+                                      const Vec3& v, const HPoint& lp, const Light& light) {
+  const Sign s1 = orientation(ray.origin, HPoint::point(u), HPoint::point(v), p);
+  const Sign s2 = orientation(ray.origin, lp, HPoint::point(v), p);
+  const Sign s3 = orientation(ray.origin, HPoint::point(u), lp, p);
+  if (s1 == Sign::zero || s2 == Sign::zero || s3 == Sign::zero) return std::nullopt;
+  if (s1 != s2 || s2 != s3) return false;
+  if (light.type == LightType::point) {
+    const Sign s4 = orientation(light.position, HPoint::at_infinity(ray.direction),
+                                HPoint::point(v), HPoint::point(u));
+    if (s4 == Sign::zero) return std::nullopt;
+    if (s4 != s1) return false;
+  }
+  return true;
+}
+
+/// The entry of start.planes[light] for shadow polygon `polygon`, if any.
+const EyePlaneSide* eye_plane(const EyeStart& start, std::uint32_t light, std::uint32_t polygon) {
+  if (light >= start.planes.size()) return nullptr;
+  const std::vector<EyePlaneSide>& planes = start.planes[light];
+  const auto it =
+      std::lower_bound(planes.begin(), planes.end(), polygon,
+                       [](const EyePlaneSide& s, std::uint32_t k) { return s.polygon < k; });
+  return it != planes.end() && it->polygon == polygon ? &*it : nullptr;
+}
+
+}  // namespace
+
 std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangle& hit,
                                           std::uint32_t light_index, const EyeStart& start) const {
   const Light& light = scene_->lights[light_index];
@@ -53,29 +90,28 @@ std::optional<int> VolumeCrossings::count(const SampleRay& ray, const HitTriangl
   int total = start.count[light_index];
   std::vector<std::int32_t> toggled;  // twisted groups crossed, each once per crossing
   for (std::uint32_t c : candidates) {
-    const ShadowPolygon& sp = volumes_->polygons[items_[light_index][c]];
+    const std::uint32_t index = items_[light_index][c];
+    const ShadowPolygon& sp = volumes_->polygons[index];
     const Vec3& u = sp.vertices[0];
     const Vec3& v = sp.vertices[1];
     // Sides of the wedge's plane (u, v, L): the eye and P must be strictly apart.
-    const Sign side_eye = orientation(u, HPoint::point(v), lp, eye);
+    Sign side_eye = orientation(u, HPoint::point(v), lp, eye);
     const Sign side_p = orientation(u, HPoint::point(v), lp, p);
-    if (side_eye == Sign::zero || side_p == Sign::zero) return std::nullopt;
-    if (side_eye == side_p) continue;
-    // Does the line EP pass inside the wedge? orientation(E, P, x, y) is
-    // orientation(E, x, y, P). The wedge's edges are u→v, v→(away from L),
-    // (at infinity), (from infinity)→u; the rays from u and v away from L
-    // give orientation(E, P, L, v) and orientation(E, P, u, L), and the edge
-    // at infinity of a point light the sign of det[d, v - L, u - L].
-    const Sign s1 = orientation(ray.origin, HPoint::point(u), HPoint::point(v), p);
-    const Sign s2 = orientation(ray.origin, lp, HPoint::point(v), p);
-    const Sign s3 = orientation(ray.origin, HPoint::point(u), lp, p);
-    if (s1 == Sign::zero || s2 == Sign::zero || s3 == Sign::zero) return std::nullopt;
-    if (s1 != s2 || s2 != s3) continue;
-    if (light.type == LightType::point) {
-      const Sign s4 = orientation(light.position, HPoint::at_infinity(ray.direction),
-                                  HPoint::point(v), HPoint::point(u));
-      if (s4 == Sign::zero) return std::nullopt;
-      if (s4 != s1) continue;
+    if (side_p == Sign::zero) return std::nullopt;
+    if (side_eye == Sign::zero) {
+      // The eye is in the side's plane. The segment leaves the plane at
+      // once, so it crosses the side there or nowhere: there when the eye
+      // lies inside the wedge and P on the side other than the perturbed
+      // eye's, from which the start count was taken (eye_start.h).
+      const EyePlaneSide* plane = eye_plane(start, light_index, index);
+      if (!plane) return std::nullopt;  // not listed: the light is degenerate
+      if (!plane->holds_eye || plane->eye_side == side_p) continue;
+      side_eye = plane->eye_side;
+    } else {
+      if (side_eye == side_p) continue;
+      const std::optional<bool> inside = line_inside_wedge(ray, p, u, v, lp, light);
+      if (!inside) return std::nullopt;
+      if (!*inside) continue;
     }
     // The quad (u, v, v', u') runs counter-clockwise seen from the side where
     // orientation(u, v, L, X) < 0.

@@ -39,13 +39,15 @@ namespace umbra::raster {
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start,
-                               Progress* progress, bool skip_hidden_shadows) {
+                               Progress* progress, bool skip_hidden_shadows,
+                               std::span<const EyePlane> eye_planes) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
   threads = resolve_threads(threads);
   const auto start = std::chrono::steady_clock::now();
   detail::Scene scene = detail::prepare(frame, polygons, lights, group_start, threads);
+  detail::add_eye_planes(eye_planes, scene);
   if (!skip_hidden_shadows) std::fill(scene.cullable.begin(), scene.cullable.end(), 0);
   scene.any_cullable =
       std::find(scene.cullable.begin(), scene.cullable.end(), 1) != scene.cullable.end();

@@ -32,6 +32,21 @@ struct RasterPolygon {
   std::int32_t group = -1;
 };
 
+/// A shadow polygon whose plane holds the eye, handed over as that plane
+/// instead of as a polygon (which the eye sees edge-on). No ray from the eye
+/// crosses it in front of a visible point except at the eye itself: the
+/// rays that leave the eye on the side `normal` points to, when the eye
+/// lies inside the polygon (eye_start.h). Those rays count `weight` (or
+/// toggle `group`) as a crossing in front of every visible point; a ray too
+/// close to the plane to tell flags its pixel for `light`. Weight 0 and
+/// group -1: the plane only flags (the eye outside the polygon).
+struct EyePlane {
+  geometry::Vec3 normal;  ///< world space
+  std::uint32_t light = 0;
+  std::int32_t weight = 0;
+  std::int32_t group = -1;
+};
+
 /// Bits of ScanlineResult::uncertain.
 /// The visible surface or its depth may be wrong: every answer at the pixel.
 inline constexpr std::uint8_t kSurfaceUncertain = 1;
@@ -79,9 +94,11 @@ struct ScanlineResult {
 /// `progress`, if given, is advanced by one per finished row.
 /// `skip_hidden_shadows` = false scans every shadow polygon on every row: the
 /// same result, slower (tests compare the two).
+/// `eye_planes`: the shadow polygons through the eye, as planes (EyePlane).
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start = {},
-                               Progress* progress = nullptr, bool skip_hidden_shadows = true);
+                               Progress* progress = nullptr, bool skip_hidden_shadows = true,
+                               std::span<const EyePlane> eye_planes = {});
 
 }  // namespace umbra::raster

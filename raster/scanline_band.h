@@ -150,6 +150,9 @@ class Band {
   [[gnu::always_inline]] inline void shade_shadow(const ProjectedPolygon& shadow,
                                                   std::uint32_t polygon, int i0, int i1, int j);
 
+  /// The eye planes over the band's pixels: their crossings at the eye.
+  void shade_eye_planes();
+
   /// The band's twisted groups whose flag changed in front of the visible point.
   void count_groups();
 
@@ -224,8 +227,14 @@ class Band {
   // depth_bound_[k][i]: the largest bound on an exact visible depth in the
   // band's columns [i, i + 2^k) (-infinity where nothing is seen).
   std::vector<std::vector<double>> depth_bound_;
-  // (pixel, polygon): twisted shadow polygons crossed in front of the visible point in the band
-  std::vector<std::pair<std::size_t, std::uint32_t>> group_hits_;
+  // Twisted shadow polygons (and eye planes) crossed in front of the
+  // visible point in the band.
+  struct GroupHit {
+    std::size_t pixel;
+    std::int32_t group;
+    std::uint32_t light;
+  };
+  std::vector<GroupHit> group_hits_;
 };
 
 }  // namespace umbra::raster::detail

@@ -331,4 +331,17 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   return scene;
 }
 
+void add_eye_planes(std::span<const EyePlane> planes, Scene& scene) {
+  for (const EyePlane& plane : planes) {
+    if (plane.light >= scene.lights || !geometry::is_finite(plane.normal) ||
+        (plane.group >= 0 && static_cast<std::size_t>(plane.group) >= scene.group_start.size()) ||
+        !(length(plane.normal) > 0))
+      throw std::invalid_argument("scanline_render: an eye plane of light " +
+                                  std::to_string(plane.light) +
+                                  " has a bad light, group or normal");
+    const Vec3 n = scene.camera.to_camera_direction(plane.normal);
+    scene.eye_planes.push_back({n, length(n), plane.light, plane.weight, plane.group});
+  }
+}
+
 }  // namespace umbra::raster::detail

@@ -177,6 +177,16 @@ struct Scene {
   std::vector<std::uint32_t> degenerate;  ///< polygons whose bounding box is flagged
   std::size_t lights = 0;
   std::vector<std::uint8_t> group_start;  ///< every twisted group's flag at the eye
+  /// The shadow polygons through the eye (EyePlane), their normals in
+  /// camera space.
+  struct CameraEyePlane {
+    Vec3 normal;
+    double normal_length = 0;
+    std::uint32_t light = 0;
+    std::int32_t weight = 0;
+    std::int32_t group = -1;
+  };
+  std::vector<CameraEyePlane> eye_planes;
 };
 
 /// Checks the input (throws std::invalid_argument naming the first bad
@@ -184,5 +194,9 @@ struct Scene {
 /// `threads` threads.
 Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
               std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads);
+
+/// Checks the eye planes (throws std::invalid_argument on a bad light,
+/// group or normal) and adds them to the prepared scene.
+void add_eye_planes(std::span<const EyePlane> planes, Scene& scene);
 
 }  // namespace umbra::raster::detail

@@ -92,6 +92,7 @@ void Band::scan_shadows() {
       }
     }
   }
+  shade_eye_planes();
   count_groups();
   flag_near_edges();
   for (int j = band0_; j < band1_; ++j) flag_degenerate(j);
@@ -138,7 +139,37 @@ void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, i
     if (shadow.group < 0)
       result_.count[p * scene_.lights + shadow.light] += shadow.weight;
     else
-      group_hits_.push_back({p, polygon});
+      group_hits_.push_back({p, shadow.group, shadow.light});
+  }
+}
+
+/// The eye planes (Scene::eye_planes) at every pixel of the band where a
+/// point is visible: a ray clearly on a plane's crossing side counts its
+/// weight or toggles its group; one within 1e-9 of the plane (relative to
+/// |n|·|d|, far above the rounding of the camera-space normal and ray) is
+/// flagged for the plane's light.
+void Band::shade_eye_planes() {
+  if (scene_.eye_planes.empty()) return;
+  const int width = scene_.camera.frame.width;
+  for (int j = band0_; j < band1_; ++j) {
+    const std::size_t base = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
+    for (int i = 0; i < width; ++i) {
+      const std::size_t p = pixel(i, j);
+      if (result_.visible[p] < 0) continue;
+      const Vec3& d = ray_[base + static_cast<std::size_t>(i)];
+      for (const Scene::CameraEyePlane& plane : scene_.eye_planes) {
+        const double s = dot(plane.normal, d);
+        if (!(std::abs(s) > 1e-9 * plane.normal_length * ray_length_[base + i])) {
+          flag_light(p, plane.light);
+          continue;
+        }
+        if (s < 0) continue;
+        if (plane.group < 0)
+          result_.count[p * scene_.lights + plane.light] += plane.weight;
+        else
+          group_hits_.push_back({p, plane.group, plane.light});
+      }
+    }
   }
 }
 
@@ -147,17 +178,18 @@ void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, i
 /// its polygons crossed) changes its light's count by one, +1 where the
 /// flag is set at the hit, -1 where it is cleared.
 void Band::count_groups() {
-  std::sort(group_hits_.begin(), group_hits_.end());
+  std::sort(group_hits_.begin(), group_hits_.end(),
+            [](const GroupHit& a, const GroupHit& b) { return a.pixel < b.pixel; });
   for (std::size_t k = 0; k < group_hits_.size();) {
-    const std::size_t p = group_hits_[k].first;
+    const std::size_t p = group_hits_[k].pixel;
     std::size_t end = k;
-    for (; end < group_hits_.size() && group_hits_[end].first == p; ++end)
-      flags_[static_cast<std::size_t>(scene_.polygons[group_hits_[end].second].group)] ^= 1;
+    for (; end < group_hits_.size() && group_hits_[end].pixel == p; ++end)
+      flags_[static_cast<std::size_t>(group_hits_[end].group)] ^= 1;
     for (; k < end; ++k) {
-      const ProjectedPolygon& t = scene_.polygons[group_hits_[k].second];
-      const auto g = static_cast<std::size_t>(t.group);
+      const GroupHit& hit = group_hits_[k];
+      const auto g = static_cast<std::size_t>(hit.group);
       if (flags_[g] != scene_.group_start[g])
-        result_.count[p * scene_.lights + t.light] += flags_[g] ? 1 : -1;
+        result_.count[p * scene_.lights + hit.light] += flags_[g] ? 1 : -1;
       flags_[g] = scene_.group_start[g];  // restored for the next pixel
     }
   }

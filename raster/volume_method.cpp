@@ -2,6 +2,7 @@
 // In_Shadow flags, counted by the scanline renderer from each light's count
 // at the eye; what floating point cannot decide is decided again exactly, so
 // every pixel agrees with the oracle off boundaries.
+#include <geometry/exact_directions.h>
 #include <geometry/exact_predicates.h>
 #include <geometry/eye_start.h>
 #include <geometry/shadow_oracle.h>
@@ -27,10 +28,17 @@ using geometry::ShadowClass;
 
 namespace {
 
-/// The shadow polygons enter the scanline's sorts beside the surfaces.
-void append_shadow_polygons(const geometry::ShadowVolumes& volumes,
+/// The shadow polygons enter the scanline's sorts beside the surfaces, but
+/// those whose plane holds the eye (eye.planes) go as eye planes: seen
+/// edge-on they would be drawn as nothing and flag their whole bounding
+/// box, and where they hold the eye, every pixel.
+void append_shadow_polygons(const geometry::ShadowVolumes& volumes, const geometry::EyeStart& eye,
                             std::vector<RasterPolygon>& polygons) {
+  std::vector<std::uint8_t> through_eye(volumes.polygons.size(), 0);
+  for (const auto& planes : eye.planes)
+    for (const geometry::EyePlaneSide& side : planes) through_eye[side.polygon] = 1;
   for (std::uint32_t k = 0; k < volumes.polygons.size(); ++k) {
+    if (through_eye[k]) continue;
     const geometry::ShadowPolygon& s = volumes.polygons[k];
     RasterPolygon raster;
     raster.vertices = s.vertices;
@@ -41,6 +49,40 @@ void append_shadow_polygons(const geometry::ShadowVolumes& volumes,
     raster.group = s.group;
     polygons.push_back(std::move(raster));
   }
+}
+
+/// eye.planes as the scanline takes them. A side that holds the eye is
+/// crossed at the eye by the rays leaving on the side other than the
+/// perturbed eye's (where the start count was taken), which then add what
+/// crossing it from the eye's side adds: +nb_c from the side where
+/// orientation(u, v, L, ·) < 0, on which the side runs counter-clockwise.
+std::vector<EyePlane> eye_planes(const geometry::Scene& scene,
+                                 const geometry::ShadowVolumes& volumes,
+                                 const geometry::EyeStart& eye) {
+  std::vector<EyePlane> out;
+  for (std::uint32_t l = 0; l < eye.planes.size(); ++l)
+    for (const geometry::EyePlaneSide& side : eye.planes[l]) {
+      const geometry::ShadowPolygon& sp = volumes.polygons[side.polygon];
+      const geometry::Light& light = scene.lights[l];
+      const geometry::Vec3& u = sp.vertices[0];
+      const geometry::Vec3& v = sp.vertices[1];
+      // sign(n·d) = orientation(u, v, L, d at infinity).
+      const geometry::Vec3 n = light.type == geometry::LightType::point
+                                   ? geometry::exact_normal(u, v, light.position)
+                                   : -geometry::exact_cross(u, v, light.direction);
+      EyePlane plane;
+      plane.light = l;
+      plane.normal = n;
+      if (side.holds_eye) {
+        if (side.eye_side == geometry::Sign::positive) plane.normal = -n;
+        if (sp.group >= 0)
+          plane.group = sp.group;
+        else
+          plane.weight = side.eye_side == geometry::Sign::negative ? sp.nb_c : -sp.nb_c;
+      }
+      out.push_back(plane);
+    }
+  return out;
 }
 
 /// Every volume-casting polygon adds 1 inside its volume and nothing takes
@@ -82,6 +124,7 @@ Frame render_volume(const geometry::SceneIndex& index,
   } else {
     eye.count.assign(lights, 0);
     eye.degenerate.assign(lights, 0);
+    eye.planes.assign(lights, {});
   }
   for (const geometry::VolumeStats& v : volumes.stats) {
     stats.contour_edges += v.contour_edges;
@@ -94,10 +137,11 @@ Frame render_volume(const geometry::SceneIndex& index,
   start = Clock::now();
   SurfaceTable table = surface_table(index);
   const ReachTable reach(table.polygons, scene.lights);
-  append_shadow_polygons(volumes, table.polygons);
+  append_shadow_polygons(volumes, eye, table.polygons);
+  const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye);
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
-  const ScanlineResult scan =
-      scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow, &progress);
+  const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads,
+                                              eye.in_shadow, &progress, true, planes);
   stats.seconds_raster = seconds_since(start);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;

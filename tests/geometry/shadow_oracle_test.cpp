@@ -211,5 +211,38 @@ TEST(ShadowOracle, RayThroughAVertexAlongAnEdgeThatRoundsParallelIsATouch) {
   EXPECT_TRUE(shadowing_polygons(index, Vec3{std::nextafter(0.0, 1.0), 0.01 + e, -0.06 + e}, 0));
 }
 
+TEST(ShadowOracle, PerturbedPointDecidesWhereThePointTouches) {
+  // From a point on the occluder's edge line under the light the segment
+  // touches the edge; moved by the symbolic perturbation it does not, and
+  // it is on the side of the occluder's wedge that the perturbation's first
+  // direction (x > 0 side here, w1.x > 0) gives.
+  const Scene s = floor_and_occluder(point_light({0, 3, 0}));
+  const SceneIndex index(s);
+  // The ray from L through the edge point (1, 1, 0) meets y = 0.5 at x = 1.25.
+  const Vec3 x{1.25, 0.5, 0};
+  ASSERT_FALSE(shadowing_polygons(index, x, 0).has_value());
+  const auto moved = shadowing_polygons(index, PerturbedPoint(x), 0);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_TRUE(moved->empty());  // outside the occluder's shadow: w1 leans out
+  // The perturbed point is off every plane.
+  EXPECT_NE(
+      side_of({1, 1, -1}, HPoint::point({1, 1, 1}), HPoint::point({0, 3, 0}), PerturbedPoint(x)),
+      Sign::zero);
+  // The three directions are independent: no plane holds all of them.
+  const PerturbedPoint p(x);
+  EXPECT_NE(orientation({0, 0, 0}, p.w1, p.w2, p.w3), Sign::zero);
+}
+
+TEST(ShadowOracle, OnCastingSurfaceIsTheClosedSurface) {
+  const Scene s = floor_and_occluder(point_light({0, 3, 0}));
+  const SceneIndex index(s);
+  EXPECT_TRUE(on_casting_surface(index, {0.25, 1, 0.5}));
+  EXPECT_TRUE(on_casting_surface(index, {1, 1, 1}));      // a corner
+  EXPECT_FALSE(on_casting_surface(index, {1.25, 1, 0}));  // its plane, outside it
+  EXPECT_FALSE(on_casting_surface(index, {0, std::nextafter(1.0, 2.0), 0}));
+  const Scene q = floor_and_occluder(point_light({0, 3, 0}), false);
+  EXPECT_FALSE(on_casting_surface(SceneIndex(q), {0.25, 1, 0.5}));  // casts nothing
+}
+
 }  // namespace
 }  // namespace umbra::geometry

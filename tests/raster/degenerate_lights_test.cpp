@@ -122,6 +122,54 @@ TEST(DegenerateLights, PointLightUlpsFromABowTiesCrossingBesideASaddle) {
   expect_exact(out);
 }
 
+// The eye on the side volume of a quad's edge (data/scenes/eye_on_volume.json):
+// before, every one of its 19,200 pixels was decided by the oracle; now the
+// scanline counts from the perturbed eye, the side through the eye goes to
+// it as a plane, and nothing falls back.
+TEST(DegenerateLights, EyeOnASideVolumeKeepsTheScanline) {
+  const fs::path file = fs::path(UMBRA_DATA_DIR) / "scenes" / "eye_on_volume.json";
+  const geometry::Scene scene = geometry::load_scene(file);
+  RenderStats stats;
+  const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &stats);
+  const ValidationReport report =
+      validate_render(scene, ShadowChannels{frame.width, frame.height, frame.shadow},
+                      {.samples = {}, .seed = 1, .threads = 2});
+  EXPECT_EQ(report.total_mismatches(), 0u);
+  EXPECT_EQ(stats.eye_degenerate_lights, 0u);
+  EXPECT_EQ(stats.exact_fallback_pixels, 0u);
+  EXPECT_EQ(stats.exact_light_recounts, 0u);
+  // Both sides of the plane through the eye are seen: shadowed (under the
+  // quad's shadow on the floor) and lit pixels.
+  std::uint64_t shadowed = 0, lit = 0;
+  for (const float v : frame.shadow[0]) {
+    shadowed += v == kShadowShadowed;
+    lit += v == kShadowLit;
+  }
+  EXPECT_GT(shadowed, 1000u);
+  EXPECT_GT(lit, 1000u);
+}
+
+// The segment from the eye to the light through the shared edge of two
+// coplanar quads facing alike: no side stands on that edge, so the eye is
+// on no volume's boundary and its count (1: under the quads) is defined.
+// Before, the light was degenerate and the oracle decided every pixel.
+TEST(DegenerateLights, EyeSegmentThroughAnInnerEdgeCountsFromTheEye) {
+  const std::string json = R"({
+    "camera": {"eye": [0, 0, 0], "look_at": [0.3, -1, 0.2], "up": [0, 0, 1], "fov_y_deg": 70,
+               "width": 64, "height": 48},
+    "lights": [{"type": "point", "position": [0, 4, 0]}],
+    "models": [
+      {"polygons": {"vertices": [[-3, -1, -3], [-3, -1, 3], [3, -1, 3], [3, -1, -3]],
+                    "faces": [[0, 1, 2, 3]]}},
+      {"polygons": {"vertices": [[-1, 2, -1], [0, 2, -1], [0, 2, 1], [-1, 2, 1], [1, 2, -1],
+                                 [1, 2, 1]],
+                    "faces": [[0, 3, 2, 1], [1, 2, 5, 4]]}}]})";
+  const Outcome out = render_and_validate(json);
+  expect_exact(out);
+  EXPECT_EQ(out.stats.eye_degenerate_lights, 0u);
+  EXPECT_EQ(out.stats.exact_fallback_pixels, 0u);
+}
+
 // CGAL's elephant-with-holes.off untransformed, with no light on an edge:
 // before, refused with "shadow volume count -1 at pixel 2647".
 TEST(DegenerateLights, ElephantWithHolesNearItsSurface) {

@@ -1,15 +1,14 @@
-#include <raster/scanline.h>
-
 #include <gtest/gtest.h>
+#include <raster/scanline.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
-#include <stdexcept>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace umbra::raster {
@@ -110,13 +109,15 @@ int expect_matches_reference(const CameraFrame& frame, const std::vector<RasterP
       EXPECT_EQ(result.visible[p], ref.visible) << "pixel " << i << "," << j;
       failures += result.visible[p] != ref.visible;
       if (ref.visible >= 0)
-        EXPECT_NEAR(result.depth[p], static_cast<double>(ref.depth), 1e-9 * static_cast<double>(ref.depth))
+        EXPECT_NEAR(result.depth[p], static_cast<double>(ref.depth),
+                    1e-9 * static_cast<double>(ref.depth))
             << "pixel " << i << "," << j;
       else
         EXPECT_EQ(result.depth[p], std::numeric_limits<double>::infinity());
       for (std::size_t l = 0; l < lights; ++l) {
         if (result.light_mask[p] & light_bit(l)) continue;
-        EXPECT_EQ(result.count[p * lights + l], ref.count[l]) << "pixel " << i << "," << j << " light " << l;
+        EXPECT_EQ(result.count[p * lights + l], ref.count[l])
+            << "pixel " << i << "," << j << " light " << l;
         failures += result.count[p * lights + l] != ref.count[l];
       }
     }
@@ -135,7 +136,8 @@ RasterPolygon surface(std::vector<Vec3> v, std::uint32_t id) {
   p.id = id;
   return p;
 }
-RasterPolygon shadow(std::vector<Vec3> v, std::uint32_t light, std::int8_t nb_c, std::uint32_t id = 0) {
+RasterPolygon shadow(std::vector<Vec3> v, std::uint32_t light, std::int8_t nb_c,
+                     std::uint32_t id = 0) {
   RasterPolygon p;
   p.vertices = std::move(v);
   p.kind = Kind::shadow;
@@ -151,8 +153,12 @@ std::vector<Vec3> square_z(double x0, double y0, double x1, double y1, double z)
 
 // Looks down −z from (0, 0, 5); r = +x, u = +y.
 CameraFrame front_camera(int w = 16, int h = 16) {
-  return geometry::camera_frame(Camera{.eye = {0, 0, 5}, .look_at = {0, 0, 0}, .up = {0, 1, 0},
-                                       .fov_y_deg = 90, .width = w, .height = h});
+  return geometry::camera_frame(Camera{.eye = {0, 0, 5},
+                                       .look_at = {0, 0, 0},
+                                       .up = {0, 1, 0},
+                                       .fov_y_deg = 90,
+                                       .width = w,
+                                       .height = h});
 }
 
 // ---------------------------------------------------------------------------
@@ -244,8 +250,8 @@ TEST(Scanline, ShadowPolygonAddsSignedNbCInFrontOfTheSurfaceOnly) {
       // Counts exist only where a surface is seen: the floor (±4 at z = 0).
       const double t0 = -5.0 / d.z;
       const bool floor_seen = std::abs(t0 * d.x) <= 4 && std::abs(t0 * d.y) <= 4;
-      const bool in_other = floor_seen && t3 * d.x >= 0 && t3 * d.x <= 2 && t3 * d.y >= 0 &&
-                            t3 * d.y <= 2;
+      const bool in_other =
+          floor_seen && t3 * d.x >= 0 && t3 * d.x <= 2 && t3 * d.y >= 0 && t3 * d.y <= 2;
       EXPECT_EQ(at(r1, i, j, 0), in_ccw ? 2 : 0) << i << "," << j;
       EXPECT_EQ(at(r2, i, j, 0), in_ccw ? -2 : 0) << i << "," << j;
       EXPECT_EQ(at(r1, i, j, 1), in_other ? 1 : 0) << i << "," << j;
@@ -258,6 +264,40 @@ TEST(Scanline, ShadowPolygonAddsSignedNbCInFrontOfTheSurfaceOnly) {
   for (int j = 0; j < 16; ++j)
     for (int i = 0; i < 16; ++i) twos += at(r1, i, j, 0) == 2;
   EXPECT_EQ(twos, 36);
+}
+
+TEST(ScanlineEyePlanes, CountAtEveryPixelOnTheirSideAndFlagThoseOnThePlane) {
+  // The floor fills the view. Eye planes through the eye (0, 0, 5): x = 0
+  // with weight 3 for rays towards +x; y = x with a twisted group set at the
+  // eye, toggled for rays towards y > x (so -1 there); and z = 5 (every ray
+  // lies on one side of it, below) with weight 0, which only flags: nothing.
+  const CameraFrame frame = front_camera(17, 16);  // column 8 looks along x = 0
+  const std::vector<RasterPolygon> polys{surface(square_z(-8, -8, 8, 8, 0), 1)};
+  const std::vector<std::uint8_t> groups{1};
+  const std::vector<EyePlane> planes{{.normal = {1, 0, 0}, .light = 0, .weight = 3},
+                                     {.normal = {-1, 1, 0}, .light = 1, .group = 0},
+                                     {.normal = {0, 0, 1}, .light = 1}};
+  const ScanlineResult r = scanline_render(frame, polys, 2, 2, groups, nullptr, true, planes);
+  int threes = 0, toggled = 0, flagged = 0;
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 17; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * 17 + i;
+      const Vec3 d = geometry::sample_ray(frame, i, j).direction;
+      ASSERT_EQ(r.visible[p], 1);
+      const bool on_x0 = d.x == 0;
+      const bool on_diagonal = d.y == d.x;
+      EXPECT_EQ(r.count[p * 2], !on_x0 && d.x > 0 ? 3 : 0) << i << "," << j;
+      EXPECT_EQ(r.count[p * 2 + 1], !on_diagonal && d.y > d.x ? -1 : 0) << i << "," << j;
+      const std::uint64_t mask = (on_x0 ? light_bit(0) : 0) | (on_diagonal ? light_bit(1) : 0);
+      EXPECT_EQ(r.light_mask[p], mask) << i << "," << j;
+      EXPECT_EQ(r.uncertain[p], mask ? kLightsUncertain : 0) << i << "," << j;
+      threes += r.count[p * 2] == 3;
+      toggled += r.count[p * 2 + 1] == -1;
+      flagged += mask != 0;
+    }
+  EXPECT_EQ(threes, 8 * 16);
+  EXPECT_GT(toggled, 100);
+  EXPECT_EQ(flagged, 16);  // column 8; no pixel centre lies on y = x at 17 x 16
 }
 
 TEST(Scanline, ShadowPolygonReachingBehindTheEyeCountsItsFrontPart) {
@@ -321,7 +361,9 @@ std::vector<RasterPolygon> random_scene(std::uint64_t seed, int n) {
   // Dyadic coordinates (multiples of 1/64) so that quads a, b, c, a + c − b
   // are exactly planar and the reference is exact up to long double rounding.
   const auto coord = [&](int range) {
-    return static_cast<double>(static_cast<std::int64_t>(rng() % (2 * 64 * range + 1)) - 64 * range) / 64.0;
+    return static_cast<double>(static_cast<std::int64_t>(rng() % (2 * 64 * range + 1)) -
+                               64 * range) /
+           64.0;
   };
   std::vector<RasterPolygon> polys;
   for (int k = 0; k < n; ++k) {
@@ -336,14 +378,19 @@ std::vector<RasterPolygon> random_scene(std::uint64_t seed, int n) {
       polys.push_back(surface(v, static_cast<std::uint32_t>(100 + k)));
     else
       polys.push_back(shadow(v, static_cast<std::uint32_t>(rng() % 2),
-                             static_cast<std::int8_t>(rng() % 2 ? 1 : -2), static_cast<std::uint32_t>(k)));
+                             static_cast<std::int8_t>(rng() % 2 ? 1 : -2),
+                             static_cast<std::uint32_t>(k)));
   }
   return polys;
 }
 
 CameraFrame random_scene_camera(int w, int h) {
-  return geometry::camera_frame(Camera{.eye = {0.3, 2.1, 7}, .look_at = {0, 0, 0}, .up = {0, 1, 0},
-                                       .fov_y_deg = 60, .width = w, .height = h});
+  return geometry::camera_frame(Camera{.eye = {0.3, 2.1, 7},
+                                       .look_at = {0, 0, 0},
+                                       .up = {0, 1, 0},
+                                       .fov_y_deg = 60,
+                                       .width = w,
+                                       .height = h});
 }
 
 TEST(Scanline, ResultsAreIdenticalForAnyThreadCount) {
@@ -367,15 +414,15 @@ TEST(ScanlineUncertainty, PixelCentreOnAnEdgeIsFlaggedAndFarPixelsAreNot) {
   const Vec3 x = frame.eye + 4.0 * geometry::sample_ray(frame, i, j).direction;
   ASSERT_EQ(x.z, 1.0);
   // A square whose left edge passes exactly through pixel (12, 5)'s ray.
-  const std::vector<RasterPolygon> vertical{surface(
-      {{x.x, -3, 1}, {x.x + 2, -3, 1}, {x.x + 2, 3, 1}, {x.x, 3, 1}}, 1)};
+  const std::vector<RasterPolygon> vertical{
+      surface({{x.x, -3, 1}, {x.x + 2, -3, 1}, {x.x + 2, 3, 1}, {x.x, 3, 1}}, 1)};
   const ScanlineResult rv = scanline_render(frame, vertical, 0, 1);
   EXPECT_EQ(rv.uncertain[j * 16 + i], kSurfaceUncertain);
   EXPECT_EQ(rv.uncertain[j * 16 + 14], 0);  // well inside
   EXPECT_EQ(rv.uncertain[j * 16 + 2], 0);   // well outside
   // The same with a horizontal edge through it: a distance, not a crossing x.
-  const std::vector<RasterPolygon> horizontal{surface(
-      {{-3, x.y, 1}, {3, x.y, 1}, {3, x.y + 3, 1}, {-3, x.y + 3, 1}}, 1)};
+  const std::vector<RasterPolygon> horizontal{
+      surface({{-3, x.y, 1}, {3, x.y, 1}, {3, x.y + 3, 1}, {-3, x.y + 3, 1}}, 1)};
   const ScanlineResult rh = scanline_render(frame, horizontal, 0, 1);
   EXPECT_EQ(rh.uncertain[j * 16 + i], kSurfaceUncertain);
   EXPECT_EQ(rh.uncertain[j * 16 + 3], kSurfaceUncertain);  // same row, also on the edge's line
@@ -478,8 +525,8 @@ TEST(ScanlineUncertainty, RandomSceneCertainPixelsMatchBruteForce) {
     }
     EXPECT_GT(seen, 96 * 72 / 5);
     EXPECT_GT(counted, seen / 5);
-    std::cout << "seed " << seed << ": " << uncertain << " uncertain, " << seen << " seen, " << counted
-              << " with counts, of " << 96 * 72 << " pixels\n";
+    std::cout << "seed " << seed << ": " << uncertain << " uncertain, " << seen << " seen, "
+              << counted << " with counts, of " << 96 * 72 << " pixels\n";
   }
 }
 
@@ -511,7 +558,8 @@ TEST(ScanlineUncertainty, AdversarialMeshCertainPixelsMatchBruteForce) {
     }
     for (std::size_t gj = 0; gj + 1 < grid.size(); ++gj)
       for (std::size_t gi = 0; gi + 1 < grid[gj].size(); ++gi) {
-        const Vec3 a = grid[gj][gi], b = grid[gj][gi + 1], c = grid[gj + 1][gi + 1], d = grid[gj + 1][gi];
+        const Vec3 a = grid[gj][gi], b = grid[gj][gi + 1], c = grid[gj + 1][gi + 1],
+                   d = grid[gj + 1][gi];
         if (layer == 0) {
           polys.push_back(surface({a, b, c}, static_cast<std::uint32_t>(polys.size())));
           polys.push_back(surface({a, c, d}, static_cast<std::uint32_t>(polys.size())));
