@@ -66,12 +66,14 @@ int main(int argc, char** argv) {
   CLI::App* render = add_render_command(app, render_args);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
-  const auto [fuzz_check, fuzz_export] = add_fuzz_command(app, fuzz_args);
+  const FuzzCommands fuzz = add_fuzz_command(app, fuzz_args);
 
   // CLI11 reports an unknown verb as "A subcommand is required"; name it.
   if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != render->get_name() &&
-      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name() && std::string(argv[1]) != "fuzz") {
-    fmt::print(stderr, "umbra: unknown command '{}'; commands: {}, {}, {}, fuzz (see 'umbra --help')\n",
+      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name() &&
+      std::string(argv[1]) != "fuzz") {
+    fmt::print(stderr,
+               "umbra: unknown command '{}'; commands: {}, {}, {}, fuzz (see 'umbra --help')\n",
                argv[1], render->get_name(), validate->get_name(), volume->get_name());
     return kExitBadInput;
   }
@@ -86,8 +88,8 @@ int main(int argc, char** argv) {
     if (render->parsed()) return run_render(render_args);
     if (validate->parsed()) return run_validate(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
-    if (fuzz_check->parsed()) return run_fuzz_check(fuzz_args);
-    if (fuzz_export->parsed()) return run_fuzz_export(fuzz_args);
+    if (fuzz.check->parsed()) return run_fuzz_check(fuzz_args);
+    if (fuzz.exp->parsed()) return run_fuzz_export(fuzz_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;
   } catch (const umbra::geometry::InputError& e) {

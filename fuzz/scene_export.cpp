@@ -1,5 +1,5 @@
-#include <fuzz/scene_export.h>
 #include <fmt/format.h>
+#include <fuzz/scene_export.h>
 #include <geometry/input_error.h>
 #include <geometry/sample_ray.h>
 #include <geometry/scene_index.h>
@@ -62,6 +62,32 @@ bool same_bits(const geometry::Vec3& a, const geometry::Vec3& b) {
          std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
 }
 
+/// The first field of `back` whose bits differ from `scene`'s, or "" when
+/// every coordinate the checks use is the same double.
+std::string first_difference(const geometry::Scene& scene, const geometry::Scene& back) {
+  if (back.models.size() != scene.models.size()) return "number of models";
+  if (back.lights.size() != scene.lights.size()) return "number of lights";
+  if (!same_bits(back.camera.eye, scene.camera.eye)) return "camera.eye";
+  if (!same_bits(back.camera.look_at, scene.camera.look_at)) return "camera.look_at";
+  for (std::size_t k = 0; k < scene.models.size(); ++k) {
+    const auto& a = scene.models[k];
+    const auto& b = back.models[k];
+    if (b.vertices.size() != a.vertices.size() || b.polygons != a.polygons)
+      return fmt::format("models[{}] polygons", k);
+    for (std::size_t v = 0; v < a.vertices.size(); ++v)
+      if (!same_bits(b.vertices[v], a.vertices[v]))
+        return fmt::format("models[{}].vertices[{}]", k, v);
+  }
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const auto& a = scene.lights[l];
+    const auto& b = back.lights[l];
+    if (!same_bits(b.position, a.position)) return fmt::format("lights[{}].position", l);
+    if (!same_bits(b.direction, a.direction)) return fmt::format("lights[{}].direction", l);
+    if (b.light_end != a.light_end) return fmt::format("lights[{}].light_end", l);
+  }
+  return "";
+}
+
 }  // namespace
 
 namespace {
@@ -69,8 +95,9 @@ namespace {
 json scene_header(const geometry::Scene& scene) {
   json doc;
   const auto& cam = scene.camera;
-  doc["camera"] = {{"eye", vec(cam.eye)},          {"look_at", vec(cam.look_at)}, {"up", vec(cam.up)},
-                   {"fov_y_deg", cam.fov_y_deg}, {"width", cam.width},         {"height", cam.height}};
+  doc["camera"] = {{"eye", vec(cam.eye)}, {"look_at", vec(cam.look_at)},
+                   {"up", vec(cam.up)},   {"fov_y_deg", cam.fov_y_deg},
+                   {"width", cam.width},  {"height", cam.height}};
   doc["ambient"] = json::array({scene.ambient.r, scene.ambient.g, scene.ambient.b});
   doc["lights"] = json::array();
   for (const auto& l : scene.lights) {
@@ -108,7 +135,6 @@ std::string scene_to_json(const geometry::Scene& scene) {
 
 void export_scene(const GeneratedScene& generated, const TruthMasks& truth, const fs::path& dir) {
   const geometry::Scene& scene = generated.scene;
-  const auto& cam = scene.camera;
   const fs::path root = dir / generated.name;
   std::error_code ec;
   fs::create_directories(root / "meshes", ec);
@@ -144,45 +170,48 @@ void export_scene(const GeneratedScene& generated, const TruthMasks& truth, cons
     for (std::size_t p = 0; p < total; ++p) {
       const std::uint8_t c = truth.cls[l][p];
       float r = 0, g = 0, b = 0;
-      if (c == TruthMasks::kLit) r = g = b = 1, ++n[0];
-      else if (c == TruthMasks::kShadowed) ++n[1];
-      else if (c == TruthMasks::kOutOfRange) r = g = b = 0.5f, ++n[2];
-      else b = 1, ++n[3];
+      if (c == TruthMasks::kLit)
+        r = g = b = 1, ++n[0];
+      else if (c == TruthMasks::kShadowed)
+        ++n[1];
+      else if (c == TruthMasks::kOutOfRange)
+        r = g = b = 0.5f, ++n[2];
+      else
+        b = 1, ++n[3];
       rgb[3 * p] = r, rgb[3 * p + 1] = g, rgb[3 * p + 2] = b;
       const float m = truth.boundary[l][p] ? 1.0f : 0.0f;
       boundary += truth.boundary[l][p];
       mask[3 * p] = mask[3 * p + 1] = mask[3 * p + 2] = m;
     }
     raster::write_rgb_png(root / fmt::format("truth.{}.png", l), truth.width, truth.height, rgb);
-    raster::write_rgb_png(root / fmt::format("boundary.{}.png", l), truth.width, truth.height, mask);
-    counts.push_back({{"light", l}, {"lit", n[0]}, {"shadowed", n[1]}, {"out_of_range", n[2]},
-                      {"background", n[3]}, {"boundary", boundary}});
+    raster::write_rgb_png(root / fmt::format("boundary.{}.png", l), truth.width, truth.height,
+                          mask);
+    counts.push_back({{"light", l},
+                      {"lit", n[0]},
+                      {"shadowed", n[1]},
+                      {"out_of_range", n[2]},
+                      {"background", n[3]},
+                      {"boundary", boundary}});
   }
   json info;
   info["name"] = generated.name;
   info["features"] = generated.features;
+  info["placements"] = json::array();  // per light: where the generator put it
+  for (const auto& p : generated.placements) info["placements"].push_back(describe(p));
   info["width"] = truth.width;
   info["height"] = truth.height;
   info["lights"] = counts;
-  info["legend"] = "truth.<i>.png: white lit, black shadowed, grey out of range, blue background; "
-                   "boundary.<i>.png: white where either answer is right (DESIGN.md)";
+  info["legend"] =
+      "truth.<i>.png: white lit, black shadowed, grey out of range, blue background; "
+      "boundary.<i>.png: white where either answer is right (DESIGN.md)";
   write_file(root / "truth.json", info.dump(2) + "\n");
 
   // The files must say exactly what was checked.
   const geometry::Scene back = geometry::load_scene(root / "scene.json");
-  bool same = back.models.size() == scene.models.size() && back.lights.size() == scene.lights.size() &&
-              same_bits(back.camera.eye, cam.eye) && same_bits(back.camera.look_at, cam.look_at);
-  for (std::size_t k = 0; same && k < scene.models.size(); ++k) {
-    same = back.models[k].vertices.size() == scene.models[k].vertices.size() &&
-           back.models[k].polygons == scene.models[k].polygons;
-    for (std::size_t v = 0; same && v < scene.models[k].vertices.size(); ++v)
-      same = same_bits(back.models[k].vertices[v], scene.models[k].vertices[v]);
-  }
-  for (std::size_t l = 0; same && l < scene.lights.size(); ++l)
-    same = same_bits(back.lights[l].position, scene.lights[l].position) &&
-           same_bits(back.lights[l].direction, scene.lights[l].direction) &&
-           back.lights[l].light_end == scene.lights[l].light_end;
-  if (!same) throw std::runtime_error(root.string() + ": the exported scene does not read back bit for bit");
+  const std::string differs = first_difference(scene, back);
+  if (!differs.empty())
+    throw std::runtime_error(
+        root.string() + ": the exported scene does not read back bit for bit (" + differs + ")");
 }
 
 }  // namespace umbra::fuzz
