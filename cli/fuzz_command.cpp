@@ -69,9 +69,9 @@ std::string failing_lights(const fuzz::GeneratedScene& g, const fuzz::SceneCheck
 
 }  // namespace
 
-FuzzCommands add_fuzz_command(CLI::App& app, FuzzArgs& args) {
+FuzzCommands add_fuzz_command(CLI::App& app, FuzzArgs& args, FuzzRealArgs& real_args) {
   CLI::App* fuzz =
-      app.add_subcommand("fuzz", "Degenerate-scene generator: check or export");
+      app.add_subcommand("fuzz", "Degenerate scenes and real models: check, export, sweep");
   fuzz->require_subcommand(1);
   CLI::App* check = fuzz->add_subcommand(
       "check", "Generate scenes; check closed volumes and render == oracle on every pixel");
@@ -89,7 +89,8 @@ FuzzCommands add_fuzz_command(CLI::App& app, FuzzArgs& args) {
       "  umbra fuzz export out/finding --seed 7 --index 981\n"
       "Per scene: DIR/s<seed>-<i>/scene.json, meshes/*.off, truth.<i>.png, "
       "boundary.<i>.png, truth.json.");
-  return {check, exp};
+  CLI::App* real = add_fuzz_real_command(*fuzz, real_args);
+  return {check, exp, real};
 }
 
 int run_fuzz_check(const FuzzArgs& args) {

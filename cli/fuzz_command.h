@@ -1,6 +1,9 @@
 #pragma once
-// `umbra fuzz check|export`: the degenerate-scene generator of
-// fuzz/degenerate_scenes.h (docs/fuzzing.md).
+// `umbra fuzz check|export|real`: the degenerate-scene generator of
+// fuzz/degenerate_scenes.h and the real-model sweep of fuzz/real_sweep.h
+// (docs/fuzzing.md).
+#include <cli/fuzz_real_command.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <optional>
@@ -23,10 +26,11 @@ struct FuzzArgs {
 struct FuzzCommands {
   CLI::App* check = nullptr;
   CLI::App* exp = nullptr;
+  CLI::App* real = nullptr;
 };
 
 /// Adds `fuzz` with its sub-verbs.
-FuzzCommands add_fuzz_command(CLI::App& app, FuzzArgs& args);
+FuzzCommands add_fuzz_command(CLI::App& app, FuzzArgs& args, FuzzRealArgs& real_args);
 
 /// Generates and checks `count` scenes: exit 0 when every volume is a closed
 /// weighted cycle and every render equals the oracle, 1 otherwise (a refused

@@ -29,6 +29,7 @@ constexpr const char* kFooter =
     "  umbra validate data/scenes/default.json --image out/default.exr\n"
     "  umbra volume data/scenes/default.json -o out/default.volume.ply\n"
     "  umbra fuzz check --count 50 --seed 1\n"
+    "  umbra fuzz real --per-mesh 3 --seed 1\n"
     "\n"
     "Exit codes: 0 success, 1 validation found mismatches, 2 bad input or usage,\n"
     "3 internal error. Errors are one line on stderr; no partial output file is\n"
@@ -63,10 +64,11 @@ int main(int argc, char** argv) {
   ValidateArgs validate_args;
   VolumeArgs volume_args;
   FuzzArgs fuzz_args;
+  FuzzRealArgs fuzz_real_args;
   CLI::App* render = add_render_command(app, render_args);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
-  const FuzzCommands fuzz = add_fuzz_command(app, fuzz_args);
+  const FuzzCommands fuzz = add_fuzz_command(app, fuzz_args, fuzz_real_args);
 
   // CLI11 reports an unknown verb as "A subcommand is required"; name it.
   if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != render->get_name() &&
@@ -90,6 +92,7 @@ int main(int argc, char** argv) {
     if (volume->parsed()) return run_volume(volume_args);
     if (fuzz.check->parsed()) return run_fuzz_check(fuzz_args);
     if (fuzz.exp->parsed()) return run_fuzz_export(fuzz_args);
+    if (fuzz.real->parsed()) return run_fuzz_real(fuzz_real_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;
   } catch (const umbra::geometry::InputError& e) {
