@@ -1,6 +1,7 @@
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/edge_lights.h>
 #include <fuzz/splitmix64.h>
+#include <fuzz/usable_camera.h>
 #include <geometry/exact_predicates.h>
 
 #include <algorithm>
@@ -182,17 +183,21 @@ void plan_edge_lights(SplitMix64& extra, std::vector<std::optional<EdgeLight>>& 
 /// Puts the planned lights on edges of the scene's parts (not the floor,
 /// whose edges lie at the picture's rim), with light_end as often as the
 /// classic point lights; the kind's feature replaces the classic one.
-void place_edge_lights(SplitMix64& extra, const std::vector<std::optional<EdgeLight>>& edge_light,
-                       double s, const std::vector<std::size_t>& kind_feature,
-                       GeneratedScene& out) {
+/// Returns which lights moved.
+std::vector<bool> place_edge_lights(SplitMix64& extra,
+                                    const std::vector<std::optional<EdgeLight>>& edge_light,
+                                    double s, const std::vector<std::size_t>& kind_feature,
+                                    GeneratedScene& out) {
   std::vector<int> parts;
   for (std::size_t k = 0; k < out.scene.models.size(); ++k)
     if (out.scene.models[k].name != "floor") parts.push_back(static_cast<int>(k));
+  std::vector<bool> moved(edge_light.size(), false);
   for (std::size_t l = 0; l < edge_light.size(); ++l) {
     if (!edge_light[l]) continue;
     auto placement = place_edge_light(out.scene, parts, *edge_light[l], extra);
     if (!placement) placement = place_edge_light(out.scene, parts, EdgeLight::inside_edge, extra);
     if (!placement) continue;
+    moved[l] = true;
     geometry::Light& light = out.scene.lights[l];
     light.type = geometry::LightType::point;
     light.position = placement->anchor;
@@ -206,6 +211,7 @@ void place_edge_lights(SplitMix64& extra, const std::vector<std::optional<EdgeLi
     out.features[kind_feature[l]] = feature;
     out.placements[l] = *placement;
   }
+  return moved;
 }
 
 /// Every light placed on a vertex, edge, crossing or plane is, 40% of the
@@ -402,23 +408,21 @@ GeneratedScene generate_degenerate_scene(std::uint64_t seed, std::uint64_t index
   auto& cam = out.scene.camera;
   cam.eye = to_vec(eye, s);
   cam.look_at = to_vec(at, s);
-  cam.up = {0, 1, 0};
-  if (geometry::cross(cam.look_at - cam.eye, cam.up) == Vec3{}) cam.up = {1, 0, 0};
+  choose_usable_up(cam);  // (1, 0, 0) where (0, 1, 0) is parallel, as before
   cam.fov_y_deg = 60;
   cam.width = width;
   cam.height = height;
 
   settle_classic_placements(out);
   if (placements == Placements::all) {
-    place_edge_lights(extra, edge_light, s, kind_feature, out);
+    const std::vector<bool> moved = place_edge_lights(extra, edge_light, s, kind_feature, out);
     nudge_degenerate_lights(extra, out);
     // Hide the eye behind its cube from the first light again if that moved.
-    if (shadowing_cube && edge_light[0]) {
+    if (shadowing_cube && moved[0]) {
       cam.eye = 2.0 * to_vec(*shadowing_cube, s) - out.scene.lights[0].position;
       if (cam.eye == cam.look_at) cam.look_at = {0, 0, 0};
-      cam.up = {0, 1, 0};
-      if (geometry::cross(cam.look_at - cam.eye, cam.up) == Vec3{}) cam.up = {1, 0, 0};
     }
+    choose_usable_up(cam);  // a nudged light may put the eye a hair off the vertical
   }
   return out;
 }

@@ -2,6 +2,7 @@
 #include <fuzz/edge_lights.h>
 #include <fuzz/real_scenes.h>
 #include <fuzz/splitmix64.h>
+#include <fuzz/usable_camera.h>
 #include <geometry/bvh.h>
 #include <geometry/exact_predicates.h>
 
@@ -274,8 +275,7 @@ GeneratedScene real_mesh_scene(const geometry::Model& mesh, const std::string& m
   }
   cam.look_at = target;
   if (cam.look_at == cam.eye) cam.look_at = cam.eye + Vec3{0, -stage.extent, stage.extent};
-  cam.up = {0, 1, 0};
-  if (geometry::cross(cam.look_at - cam.eye, cam.up) == Vec3{}) cam.up = {1, 0, 0};
+  choose_usable_up(cam);
   cam.fov_y_deg = rng.uniform(30, 60);
   cam.width = width;
   cam.height = height;

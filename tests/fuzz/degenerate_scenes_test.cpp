@@ -5,7 +5,9 @@
 // their 1-4 ulps per coordinate; and Placements::classic is the old sequence.
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/placement_geometry.h>
+#include <fuzz/scene_export.h>
 #include <geometry/exact_predicates.h>
+#include <geometry/scene_io.h>
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -127,6 +129,16 @@ bool same_scene(const geometry::Scene& a, const geometry::Scene& b) {
   for (std::size_t l = 0; l < a.lights.size(); ++l)
     if (!same_bits(light_place(a.lights[l]), light_place(b.lights[l]))) return false;
   return true;
+}
+
+// A scene the loader refuses is no finding: its camera would give NaN rays
+// in memory and cannot be replayed from its files. Scene 723 of seed 16 was
+// one (a light nudged to -denorm_min put the eye a hair off the vertical).
+TEST(DegenerateScenes, EveryScenesCameraIsOneTheLoaderAccepts) {
+  for (std::uint64_t i = 0; i < 1500; ++i) {
+    const GeneratedScene g = generate_degenerate_scene(16, i);
+    EXPECT_NO_THROW(geometry::parse_scene(scene_to_json(g.scene), g.name + ".json")) << g.name;
+  }
 }
 
 TEST(DegenerateScenes, SameSeedSameScene) {

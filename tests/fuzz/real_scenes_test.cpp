@@ -4,9 +4,11 @@
 // their names say.
 #include <fuzz/placement_geometry.h>
 #include <fuzz/real_scenes.h>
+#include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
 #include <geometry/exact_predicates.h>
 #include <geometry/mesh_io.h>
+#include <geometry/scene_io.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,6 +91,7 @@ TEST(RealScenes, LightsAreWhereTheirNamesSay) {
       const GeneratedScene g = real_mesh_scene(mesh, file, 1, i, 48, 36);
       ASSERT_EQ(g.scene.models.size(), 2u);
       const double floor_y = g.scene.models[1].vertices[0].y;
+      EXPECT_NO_THROW(geometry::parse_scene(scene_to_json(g.scene), g.name + ".json")) << g.name;
       for (std::size_t l = 0; l < g.placements.size(); ++l) {
         const LightPlacement& p = g.placements[l];
         const geometry::Light& light = g.scene.lights[l];

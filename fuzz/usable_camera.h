@@ -1,0 +1,15 @@
+#pragma once
+// The generators' cameras must be ones the scene loader accepts: a scene
+// whose frame underflows in doubles gives NaN rays in memory and is refused
+// when read back from its exported file, so a "finding" on it is neither
+// real nor replayable.
+#include <geometry/scene.h>
+
+namespace umbra::fuzz {
+
+/// Sets camera.up to the first of (0,1,0), (1,0,0), (0,0,1) whose camera
+/// frame is finite and not degenerate (the loader's test, geometry/scene_io.cpp).
+/// The eye must differ from look_at.
+void choose_usable_up(geometry::Camera& camera);
+
+}  // namespace umbra::fuzz
