@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
 # A fuzzing campaign with a time budget: every libFuzzer harness gets an equal
-# share of the time, and so does the degenerate-scene generator
-# (umbra fuzz check with fresh seeds). Prints executions, crashes and
-# mismatches per harness. docs/fuzzing.md.
+# share of the time, and so do the degenerate-scene generator (umbra fuzz
+# check with fresh seeds) and the real-model sweep (umbra fuzz real over every
+# shipped mesh, fresh seeds). Prints executions, crashes and mismatches per
+# harness, scenes and failures per generator. docs/fuzzing.md.
 #
 #   scripts/fuzz-campaign.sh --minutes 30 [--build build-fuzz] [--only h1,h2] [--seed S]
 #
 # Builds build-fuzz with clang (UMBRA_FUZZ=ON) if it is missing. Findings go
 # to BUILD/campaign/artifacts/<harness>/ (crash-*, timeout-*, oom-*); grown
-# corpora to BUILD/campaign/corpus/<harness>/. Turn a finding into a
-# regression: copy it to fuzz/regressions/<harness>/<name> (see docs/fuzzing.md).
+# corpora to BUILD/campaign/corpus/<harness>/; failing generated scenes to
+# BUILD/campaign/generator-failures.txt, failing real-model scenes to
+# BUILD/campaign/real-failures.txt with their files under
+# BUILD/campaign/real-failures/<scene>/ (scene.json, mesh, recipe.txt). Turn a
+# finding into a regression: see docs/fuzzing.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,7 +27,7 @@ while [ $# -gt 0 ]; do
     --build) build="$2"; shift 2 ;;
     --only) only="$2"; shift 2 ;;
     --seed) seed="$2"; shift 2 ;;
-    -h|--help) sed -n 2,12p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,16p "$0"; exit 0 ;;
     *) echo "fuzz-campaign: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -37,7 +41,7 @@ if [ ! -x "$build/fuzz/fuzz_${harnesses[0]}" ]; then
   cmake --build "$build" -j2 --target $(printf 'fuzz_%s ' "${harnesses[@]}")
 fi
 
-slots=$(( ${#harnesses[@]} + 1 ))
+slots=$(( ${#harnesses[@]} + 2 ))
 share=$(( minutes * 60 / slots ))
 [ "$share" -ge 5 ] || share=5
 work="$build/campaign"
@@ -80,17 +84,48 @@ umbra="$build/cli/umbra"
 [ -x "$umbra" ] || umbra=build/cli/umbra
 [ -x "$umbra" ] || cmake --build "$build" -j2 --target umbra
 [ -x "$umbra" ] || umbra="$build/cli/umbra"
-scenes=0 failed=0 start=$(date +%s) s=$seed
+scenes=0 failed=0 refused=0 start=$(date +%s) s=$seed
+: > "$work/generator-failures.txt"
 while [ $(( $(date +%s) - start )) -lt "$share" ]; do
   out=$("$umbra" fuzz check --count 200 --seed "$s" -q 2>&1) || true
   line=$(grep '^fuzz check:' <<< "$out" || true)
   scenes=$(( scenes + 200 ))
   f=$(sed -n 's/.* \([0-9]*\) failed;.*/\1/p' <<< "$line")
+  r=$(sed -n 's/.* \([0-9]*\) refused;.*/\1/p' <<< "$line")
   failed=$(( failed + ${f:-200} ))
+  refused=$(( refused + ${r:-0} ))
   grep '^FAIL' <<< "$out" >> "$work/generator-failures.txt" || true
   s=$(( s + 1 ))
 done
 secs=$(( $(date +%s) - start ))
-printf '%-12s %12d %8d %8d %10d %8d   (scenes; seeds %d..%d)\n' generator "$scenes" \
-  $(( scenes / (secs > 0 ? secs : 1) )) 0 "$failed" "$secs" "$seed" $(( s - 1 )) | tee -a "$report"
-echo "report: $report; findings under $work/artifacts/"
+printf '%-12s %12d %8d %8d %10d %8d   (scenes, %d refused; seeds %d..%d)\n' generator "$scenes" \
+  $(( scenes / (secs > 0 ? secs : 1) )) 0 "$failed" "$secs" "$refused" "$seed" $(( s - 1 )) | tee -a "$report"
+
+# The real-model sweep: every shipped mesh once per seed, fresh seeds until
+# its share is used; failing scenes exported (at most 50 a seed).
+meshes=()
+if [ -f /usr/share/doc/libcgal-dev/data.tar.gz ]; then
+  meshes+=(--meshes "$(./scripts/cgal-meshes.sh --all)")
+fi
+for sub in OBJ PLY OFF STL; do
+  [ -d "/usr/share/assimp/models/$sub" ] && meshes+=(--meshes "/usr/share/assimp/models/$sub")
+done
+scenes=0 failed=0 refused=0 start=$(date +%s) s=$seed
+: > "$work/real-failures.txt"
+while [ ${#meshes[@]} -gt 0 ] && [ $(( $(date +%s) - start )) -lt "$share" ]; do
+  out=$("$umbra" fuzz real "${meshes[@]}" --per-mesh 1 --seed "$s" -q \
+        --export "$work/real-failures" 2>&1) || true
+  line=$(grep '^fuzz real:' <<< "$out" || true)
+  n=$(sed -n 's/^fuzz real: \([0-9]*\) scenes.*/\1/p' <<< "$line")
+  f=$(sed -n 's/.* \([0-9]*\) failed;.*/\1/p' <<< "$line")
+  r=$(sed -n 's/.* \([0-9]*\) refused;.*/\1/p' <<< "$line")
+  scenes=$(( scenes + ${n:-0} ))
+  failed=$(( failed + ${f:-1} ))
+  refused=$(( refused + ${r:-0} ))
+  grep '^FAIL' <<< "$out" | sort -u >> "$work/real-failures.txt" || true
+  s=$(( s + 1 ))
+done
+secs=$(( $(date +%s) - start ))
+printf '%-12s %12d %8d %8d %10d %8d   (scenes, %d refused; seeds %d..%d)\n' real "$scenes" \
+  $(( scenes / (secs > 0 ? secs : 1) )) 0 "$failed" "$secs" "$refused" "$seed" $(( s - 1 )) | tee -a "$report"
+echo "report: $report; findings under $work/artifacts/, $work/generator-failures.txt, $work/real-failures.txt"
