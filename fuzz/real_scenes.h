@@ -16,7 +16,7 @@ namespace umbra::fuzz {
 /// The light placements, by feature name (docs/fuzzing.md): "light_above",
 /// "light_on_vertex", "light_inside_edge", "light_edge_midpoint_sum",
 /// "light_edge_midpoint_lerp", "light_sees_edges_cross", "light_on_edge_line",
-/// "light_in_face_plane", "light_in_floor_plane", "light_at_box_centre",
+/// "light_in_face_plane", "light_inside_face", "light_in_floor_plane", "light_at_box_centre",
 /// "light_grazing_floor", "directional", "directional_along_edge",
 /// "directional_in_face_plane", "directional_grazing"; a point light gets
 /// "+light_end" when its reach ends at a vertex's distance (cutting the

@@ -122,8 +122,9 @@ TEST(RealScenes, LightsAreWhereTheirNamesSay) {
       }
     }
   }
-  for (const char* kind : {"light_on_vertex", "light_inside_edge", "light_edge_midpoint_sum",
-                           "light_in_floor_plane", "directional_along_edge", "light_in_face_plane"})
+  for (const char* kind :
+       {"light_on_vertex", "light_inside_edge", "light_edge_midpoint_sum", "light_in_floor_plane",
+        "directional_along_edge", "light_in_face_plane", "light_inside_face"})
     EXPECT_GE(kinds[kind], 10) << kind;
 }
 
