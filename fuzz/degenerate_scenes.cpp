@@ -418,11 +418,14 @@ GeneratedScene generate_degenerate_scene(std::uint64_t seed, std::uint64_t index
     const std::vector<bool> moved = place_edge_lights(extra, edge_light, s, kind_feature, out);
     nudge_degenerate_lights(extra, out);
     // Hide the eye behind its cube from the first light again if that moved.
+    const geometry::Camera classic = cam;
     if (shadowing_cube && moved[0]) {
       cam.eye = 2.0 * to_vec(*shadowing_cube, s) - out.scene.lights[0].position;
       if (cam.eye == cam.look_at) cam.look_at = {0, 0, 0};
     }
-    choose_usable_up(cam);  // a nudged light may put the eye a hair off the vertical
+    // A nudged light may put that eye a hair off the vertical, or within
+    // subnormals of look_at: then the classic eye, which was usable.
+    if (!choose_usable_up(cam)) cam = classic;
   }
   return out;
 }

@@ -281,7 +281,14 @@ GeneratedScene real_mesh_scene(const geometry::Model& mesh, const std::string& m
   }
   cam.look_at = target;
   if (cam.look_at == cam.eye) cam.look_at = cam.eye + Vec3{0, -stage.extent, stage.extent};
-  choose_usable_up(cam);
+  if (!choose_usable_up(cam)) {
+    // The eye landed within subnormals of what it looks at (a light nudged
+    // off the origin and the eye put behind it): far away instead.
+    cam.eye = stage.centre + 3.0 * stage.extent * Vec3{0.6, 0.48, 0.64};
+    cam.look_at = stage.centre;
+    out.features.back() = "eye_far";
+    choose_usable_up(cam);
+  }
   cam.fov_y_deg = rng.uniform(30, 60);
   cam.width = width;
   cam.height = height;
