@@ -2,15 +2,11 @@
 // extension, and the checks every format shares. The formats themselves live
 // in off_reader.cpp, obj_reader.cpp, ply_reader.cpp and stl_reader.cpp.
 #include <geometry/gltf_io.h>
+#include <geometry/input_file.h>
 #include <geometry/mesh_io.h>
 #include <geometry/mesh_reader_util.h>
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string>
-#include <system_error>
 
 namespace umbra::geometry {
 
@@ -37,16 +33,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::pa
 }
 
 PolygonSoup read_polygon_soup(const std::filesystem::path& file) {
-  const std::string where = file.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) {
-    throw InputError(where, "cannot read mesh: is a directory");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(where, std::string("cannot open mesh file: ") + std::strerror(errno));
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(where, "cannot read mesh file: I/O error");
-  return parse_polygon_soup(bytes, file);
+  return parse_polygon_soup(read_input_file(file, "mesh"), file);
 }
 
 }  // namespace umbra::geometry

@@ -7,17 +7,14 @@
 // ("lights[1].position"); unknown keys are errors so that typos never pass.
 #include <geometry/gltf_io.h>
 #include <geometry/input_error.h>
+#include <geometry/input_file.h>
 #include <geometry/mesh_io.h>
 #include <geometry/sample_ray.h>
 #include <geometry/scene_io.h>
 #include <geometry/transform.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -455,14 +452,7 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file)
 }
 
 Scene load_scene(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw InputError(file.string(), "cannot read scene: is a directory");
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw InputError(file.string(), std::string("cannot open scene file: ") + std::strerror(errno));
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(file.string(), "cannot read scene file: I/O error");
+  const std::string text = read_input_file(file, "scene");
   return is_gltf_path(file) ? parse_gltf_scene(text, file) : parse_scene(text, file);
 }
 
