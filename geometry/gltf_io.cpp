@@ -13,8 +13,10 @@
 // composed and applied in doubles in the documented order (no FMA: the build
 // uses -ffp-contract=off).
 #include <geometry/gltf_io.h>
+#include <geometry/gltf_json_checks.h>
 #include <geometry/gltf_matrix.h>
 #include <geometry/input_error.h>
+#include <geometry/input_file.h>
 #include <geometry/mesh_reader_util.h>
 #include <geometry/position_welder.h>
 #include <geometry/sample_ray.h>
@@ -258,21 +260,27 @@ class GltfReader {
                           nullptr);
     // Plain file access: no shell-style path expansion, and external files
     // only from the glTF file's own folder (tinygltf would also try the
-    // current directory).
+    // current directory), links resolved, regular files only.
     std::error_code ec;
     base_dir_ = fs::absolute(file_, ec).parent_path().string();
+    folder_ = gltf_folder(file_);
     loader.SetFsCallbacks({&GltfReader::file_exists, &GltfReader::expand_path,
-                           &tinygltf::ReadWholeFile, &tinygltf::WriteWholeFile, this});
+                           &GltfReader::read_whole_file, &tinygltf::WriteWholeFile, this});
     std::string err, warn;
     bool ok = false;
     const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
     if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("", "file too large");
     if (binary) {
       check_glb_container(bytes);
+      check_gltf_json(
+          bytes.substr(20, load_le<std::uint32_t>(
+                               reinterpret_cast<const unsigned char*>(bytes.data()) + 12)),
+          name_, folder_);
       ok = loader.LoadBinaryFromMemory(&model_, &err, &warn,
                                        reinterpret_cast<const unsigned char*>(bytes.data()),
                                        static_cast<unsigned int>(bytes.size()), base_dir_);
     } else {
+      check_gltf_json(bytes, name_, folder_);
       ok = loader.LoadASCIIFromString(&model_, &err, &warn, bytes.data(),
                                       static_cast<unsigned int>(bytes.size()), base_dir_);
     }
@@ -291,11 +299,33 @@ class GltfReader {
     }
   }
 
+  // The last guard of docs/security.md's path rule (check_gltf_json names
+  // the URI first): tinygltf tries the folder and then the current
+  // directory; only a candidate under the folder whose target, links
+  // resolved, is inside the folder counts as existing.
   static bool file_exists(const std::string& path, void* self) {
     const auto* reader = static_cast<const GltfReader*>(self);
     if (path.rfind(reader->base_dir_, 0) != 0) return false;
+    fs::path resolved;
     std::error_code ec;
-    return fs::is_regular_file(path, ec);
+    return resolves_inside(path, reader->folder_, resolved) && fs::is_regular_file(resolved, ec);
+  }
+  static bool read_whole_file(std::vector<unsigned char>* out, std::string* err,
+                              const std::string& path, void* self) {
+    const auto* reader = static_cast<const GltfReader*>(self);
+    fs::path resolved;
+    if (!resolves_inside(path, reader->folder_, resolved)) {
+      if (err) *err += "'" + path + "' is outside the glTF file's folder\n";
+      return false;
+    }
+    try {
+      const std::string bytes = read_input_file(resolved, "glTF external");
+      out->assign(bytes.begin(), bytes.end());
+      return true;
+    } catch (const InputError& e) {
+      if (err) *err += std::string(e.what()) + "\n";
+      return false;
+    }
   }
   static std::string expand_path(const std::string& path, void*) { return path; }
 
@@ -747,6 +777,7 @@ class GltfReader {
   fs::path file_;
   std::string name_;
   std::string base_dir_;
+  fs::path folder_;  ///< canonical: external files must resolve inside it
   tinygltf::Model model_;
 };
 

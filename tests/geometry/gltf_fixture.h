@@ -2,13 +2,12 @@
 // Small glTF files written by the tests themselves: a JSON document built
 // with nlohmann-json and one binary buffer, saved as .gltf (buffer embedded
 // as a base64 data URI, or in an external .bin) or as .glb.
-#include <nlohmann/json.hpp>
-
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -67,7 +66,8 @@ class GltfFixture {
     std::size_t i = 0;
     for (; i + 2 < in.size(); i += 3) {
       const std::uint32_t n = (std::uint32_t(std::uint8_t(in[i])) << 16) |
-                              (std::uint32_t(std::uint8_t(in[i + 1])) << 8) | std::uint8_t(in[i + 2]);
+                              (std::uint32_t(std::uint8_t(in[i + 1])) << 8) |
+                              std::uint8_t(in[i + 2]);
       for (int k = 18; k >= 0; k -= 6) out += table[(n >> k) & 63];
     }
     if (i < in.size()) {
@@ -99,7 +99,10 @@ class GltfFixture {
   std::string glb() const {
     nlohmann::json d = doc;
     if (!bin.empty()) d["buffers"] = {{{"byteLength", bin.size()}}};
-    std::string json = d.dump();
+    return glb_container(d.dump(), bin);
+  }
+  /// A GLB container of the given JSON text and BIN bytes.
+  static std::string glb_container(std::string json, const std::string& bin) {
     while (json.size() % 4 != 0) json += ' ';
     std::string body = bin;
     while (body.size() % 4 != 0) body.push_back('\0');
@@ -121,7 +124,8 @@ class GltfFixture {
   }
 
   static void write(const std::filesystem::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
 };
 
