@@ -1,5 +1,6 @@
 #include <cli/exit_codes.h>
 #include <cli/fuzz_command.h>
+#include <cli/parse_checks.h>
 #include <fmt/format.h>
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/scene_check.h>
@@ -17,8 +18,10 @@ namespace {
 void add_common(CLI::App* cmd, FuzzArgs& args) {
   CLI::Option* count =
       cmd->add_option("--count", args.count, "Number of scenes")->check(CLI::Range(1, 1000000));
-  cmd->add_option("--seed", args.seed, "Seed of the scene sequence (same seed, same scenes)");
+  cmd->add_option("--seed", args.seed, "Seed of the scene sequence (same seed, same scenes)")
+      ->check(unsigned_64());
   cmd->add_option("--index", args.index, "Only scene I of the sequence (a failure's recipe)")
+      ->check(unsigned_64())
       ->type_name("I")
       ->excludes(count);
   cmd->add_option("--placements", args.placements,

@@ -2,10 +2,13 @@
 // Output paths of the verbs: checked before any work starts (so a long render
 // never ends in "unknown extension"), and text files written whole or not at
 // all, like the images of raster/image_io.h.
+#include <geometry/scene.h>
+
 #include <filesystem>
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace umbra::cli {
 
@@ -14,6 +17,24 @@ namespace umbra::cli {
 /// when its directory does not exist. An empty list accepts any extension.
 void check_output_path(const std::filesystem::path& path,
                        std::initializer_list<std::string_view> extensions);
+
+/// A file a verb reads or writes, and the words that name it in messages:
+/// "the input scene", "-o", "--stats-json", "the sidecar of -o".
+struct NamedFile {
+  std::filesystem::path path;
+  std::string label;
+};
+
+/// Throws geometry::InputError naming the output when one of `outputs`
+/// names one of `inputs` or an earlier output: the same path once links
+/// and `.`/`..` are resolved, or the same file (device and inode) under
+/// another name, such as a hard link. Writing it would destroy an input
+/// (`--stats-json scene.json`) or one output with another.
+void check_outputs_distinct(const std::vector<NamedFile>& inputs,
+                            const std::vector<NamedFile>& outputs);
+
+/// The files a loaded scene was read from (Scene::inputs), labelled.
+std::vector<NamedFile> scene_inputs(const geometry::Scene& scene);
 
 /// Writes `text` to a temporary file beside `path`, then renames it onto
 /// `path`. Throws geometry::InputError naming `path` on failure, leaving

@@ -1,6 +1,7 @@
 #include <cli/parse_checks.h>
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -38,6 +39,42 @@ CLI::Validator thread_count() {
         return {};
       },
       "0..4096");
+}
+
+CLI::Validator unsigned_64() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        if (!parse_unsigned(text, value))
+          return "'" + text + "' is not a whole number from 0 to 18446744073709551615";
+        return {};
+      },
+      "0..2^64-1");
+}
+
+CLI::Validator finite_non_negative() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        // std::from_chars reads "nan", "inf" and "1e999" (out of range)
+        // without a locale; all of the text must be the number.
+        double value = 0;
+        const char* last = text.data() + text.size();
+        const auto [end, ec] = std::from_chars(text.data(), last, value);
+        if (text.empty() || ec != std::errc() || end != last || !std::isfinite(value) ||
+            !(value >= 0))
+          return "'" + text + "' is not a finite number >= 0";
+        return {};
+      },
+      "NUMBER >= 0");
+}
+
+CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text.empty()) return "an empty path names no file";
+        return {};
+      },
+      "PATH");
 }
 
 }  // namespace umbra::cli

@@ -11,4 +11,17 @@ CLI::Validator positive_integer();
 /// A whole number from 0 (all hardware threads) to 4096.
 CLI::Validator thread_count();
 
+/// A whole number from 0 to 2^64 - 1 (seeds): no sign, no wrap-around
+/// ("-1" is not read as 2^64 - 1, nor 2^64 as 0).
+CLI::Validator unsigned_64();
+
+/// A finite number >= 0 (biases, epsilons). CLI11's NonNegativeNumber lets
+/// NaN through (every comparison with NaN is false), and a NaN epsilon
+/// silently removed every shadow.
+CLI::Validator finite_non_negative();
+
+/// A non-empty path: `-o ""` names no file (and must not fall back to the
+/// default name as if -o had not been given).
+CLI::Validator non_empty_path();
+
 }  // namespace umbra::cli

@@ -67,6 +67,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("-o,--output", args.output,
                   "Output image: .png (beauty) or .exr (beauty + shadow.<i>, count.<i>, depth); "
                   "default <scene stem>.png in the current directory")
+      ->check(non_empty_path())
       ->type_name("OUT");
   cmd->add_option("--method", args.method,
                   "Shadow method: volume (default; exact at every sample), map (Williams' shadow "
@@ -81,12 +82,12 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--map-bias", args.map_bias,
                   "Constant depth bias in float depth spacings at the sample's depth, as "
                   "glPolygonOffset's units (map only; default 4; docs/shadow-maps.md)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_non_negative())
       ->type_name("B");
   cmd->add_option("--map-slope-bias", args.map_slope_bias,
                   "Slope-scaled depth bias: times the receiver's depth change per texel, as "
                   "glPolygonOffset's factor (map only; default 1.5; docs/shadow-maps.md)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_non_negative())
       ->type_name("S");
   cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest (default) or bilinear")
       ->transform(CLI::IsMember({"nearest", "bilinear"}, CLI::ignore_case))
@@ -100,13 +101,14 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--ray-epsilon", args.ray_epsilon,
                   "Shadow-ray start offset as a fraction of the scene's bounding-box diagonal "
                   "(ray only; default 1e-5)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_non_negative())
       ->type_name("E");
   cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
       ->check(thread_count())
       ->type_name("N");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write timings per phase and counts as JSON to FILE ('-' = stdout)")
+      ->check(non_empty_path())
       ->type_name("FILE");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
   cmd->add_option("--spp", args.spp,
@@ -136,11 +138,17 @@ int run_render(const RenderArgs& args) {
   check_method_options(args);
   // Cheap checks first: a long render must not end in "unknown extension".
   check_output_path(output, {".png", ".exr"});
-  if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});
+  std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
+  if (!args.stats_json.empty() && !stats_to_stdout) {
+    check_output_path(args.stats_json, {});
+    outputs.push_back({args.stats_json, "--stats-json"});
+  }
+  check_outputs_distinct({{scene_path, "the input scene"}}, outputs);
 
   RenderTimings timings;
   auto phase = std::chrono::steady_clock::now();
   const geometry::Scene scene = geometry::load_scene(scene_path);
+  check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   timings.load = seconds_since(phase);
 
   raster::RenderOptions options;

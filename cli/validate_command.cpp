@@ -74,11 +74,14 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
   cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed (default: all)")
       ->check(positive_integer())
       ->type_name("N");
-  cmd->add_option("--seed", args.seed, "Seed for --samples (default 1)")->type_name("S");
+  cmd->add_option("--seed", args.seed, "Seed for --samples (default 1)")
+      ->check(unsigned_64())
+      ->type_name("S");
   cmd->add_flag("--json", args.json, "Print the report as JSON on stdout instead of text");
   cmd->add_option("--mask", args.mask,
                   "Mismatch mask PNG (default <image stem>.mismatches.png beside the image): "
                   "dark grey agree, yellow boundary, red mismatch, black not checked")
+      ->check(non_empty_path())
       ->type_name("MASK.png");
   cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
       ->check(thread_count())
@@ -86,6 +89,7 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
   cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write the report and timings per phase as JSON to FILE ('-' = stdout)")
+      ->check(non_empty_path())
       ->type_name("FILE");
   cmd->footer(
       "Example:\n"
@@ -101,7 +105,14 @@ int run_validate(const ValidateArgs& args) {
                             ? image.parent_path() / (image.stem().string() + ".mismatches.png")
                             : fs::path(args.mask);
   check_output_path(mask, {".png"});
-  if (!args.stats_json.empty() && args.stats_json != "-") check_output_path(args.stats_json, {});
+  std::vector<NamedFile> outputs = {{mask, args.mask.empty() ? "the default mask" : "--mask"}};
+  if (!args.stats_json.empty() && args.stats_json != "-") {
+    check_output_path(args.stats_json, {});
+    outputs.push_back({args.stats_json, "--stats-json"});
+  }
+  const std::vector<NamedFile> inputs = {{args.scene, "the input scene"},
+                                         {image, "the image to validate"}};
+  check_outputs_distinct(inputs, outputs);
   const auto start = std::chrono::steady_clock::now();
   auto phase = start;
   const auto lap = [&phase] {
@@ -112,6 +123,7 @@ int run_validate(const ValidateArgs& args) {
   };
 
   const geometry::Scene scene = geometry::load_scene(args.scene);
+  check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   const double seconds_load = lap();
   const raster::ShadowChannels channels = raster::read_shadow_channels(image);
   const double seconds_read = lap();

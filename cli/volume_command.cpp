@@ -44,9 +44,11 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
                   "in the sidecar OUT.json) or .gltf/.glb (float32 positions; attributes as "
                   "per-vertex _FACE, _LIGHT, ... on each face's own vertices); default "
                   "<scene stem>.ply in the current directory")
+      ->check(non_empty_path())
       ->type_name("OUT");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write counts per light and timings as JSON to FILE ('-' = stdout)")
+      ->check(non_empty_path())
       ->type_name("FILE");
   cmd->add_option("--threads", args.threads,
                   "Worker threads, one light at a time each (0 = all hardware threads); the "
@@ -73,13 +75,22 @@ int run_volume(const VolumeArgs& args) {
 
   // Cheap checks first: nothing is built for an output that cannot be written.
   check_output_path(output, {".ply", ".obj", ".off", ".gltf", ".glb"});
+  std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
   const auto sidecar = geometry::volume_sidecar_path(output);
-  if (sidecar) check_output_path(*sidecar, {});
-  if (!args.stats_json.empty() && !stats_to_stdout) check_output_path(args.stats_json, {});
+  if (sidecar) {
+    check_output_path(*sidecar, {});
+    outputs.push_back({*sidecar, "the sidecar of -o"});
+  }
+  if (!args.stats_json.empty() && !stats_to_stdout) {
+    check_output_path(args.stats_json, {});
+    outputs.push_back({args.stats_json, "--stats-json"});
+  }
+  check_outputs_distinct({{scene_path, "the input scene"}}, outputs);
 
   VolumeTimings timings;
   auto phase = std::chrono::steady_clock::now();
   const geometry::Scene scene = geometry::load_scene(scene_path);
+  check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   timings.load = seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();

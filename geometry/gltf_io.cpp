@@ -106,6 +106,9 @@ class GltfReader {
     throw InputError(path.empty() ? name_ : name_ + ": " + path, what);
   }
 
+  /// The external files (buffers, images) read while parsing.
+  const std::vector<fs::path>& externals() const { return externals_; }
+
   /// One instance of a mesh primitive with triangles: its triangles in world
   /// coordinates (welded within `soup`), and the primitive's color.
   struct Instance {
@@ -321,6 +324,7 @@ class GltfReader {
     try {
       const std::string bytes = read_input_file(resolved, "glTF external");
       out->assign(bytes.begin(), bytes.end());
+      reader->externals_.push_back(path);
       return true;
     } catch (const InputError& e) {
       if (err) *err += std::string(e.what()) + "\n";
@@ -778,6 +782,8 @@ class GltfReader {
   std::string name_;
   std::string base_dir_;
   fs::path folder_;  ///< canonical: external files must resolve inside it
+  /// External files read (as tinygltf named them), for Scene::inputs.
+  mutable std::vector<fs::path> externals_;
   tinygltf::Model model_;
 };
 
@@ -804,6 +810,7 @@ Scene parse_gltf_scene(std::string_view bytes, const fs::path& file) {
     reader.fail("meshes", "the scene instances no mesh with triangles; umbra needs at least one");
   scene.lights = reader.lights();
   scene.camera = reader.camera();
+  scene.inputs = reader.externals();
   return scene;
 }
 
@@ -817,6 +824,7 @@ PolygonSoup parse_gltf_polygon_soup(std::string_view bytes, const fs::path& file
     for (const Polygon& polygon : instance.soup.polygons)
       soup.polygons.push_back({remap[polygon[0]], remap[polygon[1]], remap[polygon[2]]});
   }
+  soup.files = reader.externals();
   return soup;
 }
 

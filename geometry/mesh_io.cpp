@@ -33,7 +33,9 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::pa
 }
 
 PolygonSoup read_polygon_soup(const std::filesystem::path& file) {
-  return parse_polygon_soup(read_input_file(file, "mesh"), file);
+  PolygonSoup soup = parse_polygon_soup(read_input_file(file, "mesh"), file);
+  soup.files.insert(soup.files.begin(), file);
+  return soup;
 }
 
 }  // namespace umbra::geometry

@@ -15,6 +15,9 @@ namespace umbra::geometry {
 struct PolygonSoup {
   std::vector<Vec3> vertices;
   std::vector<Polygon> polygons;
+  /// The files read to make it: the mesh file itself (read_polygon_soup)
+  /// and a glTF file's external buffers and images.
+  std::vector<std::filesystem::path> files;
 };
 
 /// Reads OFF, OBJ, PLY (ASCII, binary little/big endian) and STL (ASCII,

@@ -63,6 +63,9 @@ struct Scene {
   std::vector<Light> lights;
   std::vector<Model> models;
   std::filesystem::path source;  ///< the file it was read from (for messages)
+  /// Every file read to load it: the scene file, its mesh files and glTF
+  /// external buffers and images (outputs must not overwrite any of them).
+  std::vector<std::filesystem::path> inputs;
 };
 
 }  // namespace umbra::geometry

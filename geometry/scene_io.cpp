@@ -374,7 +374,8 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
   return soup;
 }
 
-Model read_model(const SceneReader& in, const Json& v, std::size_t index) {
+Model read_model(const SceneReader& in, const Json& v, std::size_t index,
+                 std::vector<std::filesystem::path>& inputs) {
   const std::string path = item("models", index);
   in.expect_object(v, path);
   in.check_keys(
@@ -406,6 +407,7 @@ Model read_model(const SceneReader& in, const Json& v, std::size_t index) {
     if (mesh.empty()) in.fail(mesh_path, "empty mesh path");
     try {
       soup = read_polygon_soup(in.file().parent_path() / mesh);
+      inputs.insert(inputs.end(), soup.files.begin(), soup.files.end());
     } catch (const InputError& error) {
       in.fail(mesh_path, error.what());  // the mesh reader's message names the mesh file and line
     }
@@ -447,13 +449,15 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file)
   const Json& models = in.array(in.required(root, "models", ""), "models");
   if (models.empty()) in.fail("models", "a scene needs at least one model");
   for (std::size_t i = 0; i < models.size(); ++i)
-    scene.models.push_back(read_model(in, models[i], i));
+    scene.models.push_back(read_model(in, models[i], i, scene.inputs));
   return scene;
 }
 
 Scene load_scene(const std::filesystem::path& file) {
   const std::string text = read_input_file(file, "scene");
-  return is_gltf_path(file) ? parse_gltf_scene(text, file) : parse_scene(text, file);
+  Scene scene = is_gltf_path(file) ? parse_gltf_scene(text, file) : parse_scene(text, file);
+  scene.inputs.insert(scene.inputs.begin(), file);
+  return scene;
 }
 
 }  // namespace umbra::geometry

@@ -7,6 +7,9 @@
 # relative to it and checked afterwards (no partial output left behind);
 # MUST_EXIST paths likewise (the outputs a successful run promises).
 # Lists use '|' because ';' does not survive add_test's argument passing.
+# An ARGS element @EMPTY@ is passed as one empty argument (`-o ""`), which
+# a CMake list cannot hold. COPY_FILES (absolute paths) are copied into
+# WORK_DIR beforehand.
 cmake_minimum_required(VERSION 3.25)
 
 foreach(var UMBRA WORK_DIR EXPECT_EXIT)
@@ -25,13 +28,34 @@ file(MAKE_DIRECTORY "${WORK_DIR}")
 foreach(f IN LISTS setup_files)
   file(WRITE "${WORK_DIR}/${f}" "")
 endforeach()
+string(REPLACE "|" ";" copy_files "${COPY_FILES}")
+foreach(f IN LISTS copy_files)
+  file(COPY "${f}" DESTINATION "${WORK_DIR}")
+endforeach()
 
-execute_process(
-  COMMAND "${UMBRA}" ${args}
-  WORKING_DIRECTORY "${WORK_DIR}"
-  RESULT_VARIABLE exit_code
-  OUTPUT_VARIABLE out
-  ERROR_VARIABLE err)
+list(FIND args "@EMPTY@" empty_at)
+if(empty_at GREATER_EQUAL 0)
+  list(SUBLIST args 0 ${empty_at} args_before)
+  math(EXPR after_at "${empty_at} + 1")
+  set(args_after "")
+  list(LENGTH args n_args)
+  if(after_at LESS n_args)
+    list(SUBLIST args ${after_at} -1 args_after)
+  endif()
+  execute_process(
+    COMMAND "${UMBRA}" ${args_before} "" ${args_after}
+    WORKING_DIRECTORY "${WORK_DIR}"
+    RESULT_VARIABLE exit_code
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE err)
+else()
+  execute_process(
+    COMMAND "${UMBRA}" ${args}
+    WORKING_DIRECTORY "${WORK_DIR}"
+    RESULT_VARIABLE exit_code
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE err)
+endif()
 
 set(failures "")
 if(NOT exit_code STREQUAL "${EXPECT_EXIT}")
