@@ -8,8 +8,10 @@
 #include <cli/volume_command.h>
 #include <fmt/format.h>
 #include <geometry/input_error.h>
+#include <geometry/temporary_files.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -54,6 +56,12 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Ctrl-C, kill or a closed terminal while a file is written: remove the
+  // hidden temporary, then end as the signal says.
+  umbra::geometry::remove_temporaries_on_signals();
+  // A file size limit (ulimit -f) would kill the process mid-write with
+  // SIGXFSZ; ignored, the write fails with EFBIG and is reported, exit 2.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"umbra: exact shadow volumes, rendered and proved right", "umbra"};
   app.set_version_flag("--version", std::string("umbra ") + UMBRA_VERSION,
                        "Print the version and exit");

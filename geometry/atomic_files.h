@@ -4,6 +4,7 @@
 // (meshes and sidecars, images, statistics) goes through here.
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,13 @@ std::filesystem::path temporary_beside(const std::filesystem::path& path);
 /// Writes every (path, bytes) pair to a temporary beside its path, then
 /// renames all of them; on any failure removes the temporaries and whatever
 /// was already renamed, and throws InputError naming the failing path.
+/// Every write(2), fsync(2) and close(2) is checked (a full disk, a quota,
+/// a file size limit); the temporaries are removed on SIGINT, SIGTERM and
+/// SIGHUP once the program calls remove_temporaries_on_signals
+/// (temporary_files.h).
 void write_all_or_nothing(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+/// The same for one file whose bytes are held elsewhere (an encoded image).
+void write_all_or_nothing(const std::filesystem::path& path, std::string_view bytes);
 
 }  // namespace umbra::geometry

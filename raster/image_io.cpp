@@ -1,3 +1,4 @@
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <geometry/atomic_files.h>
@@ -53,40 +54,38 @@ void note_failure(bool ok, std::string& error, const std::string& what) {
   if (!ok && error.empty()) error = what.empty() ? "unknown OpenImageIO error" : what;
 }
 
-/// Writes one image of `spec`, its pixels given by `write` (which returns
-/// false on failure), to a temporary file beside `path`, then renames it
-/// onto `path`. On any failure the temporary file is removed and an
-/// InputError names `path`.
+/// Encodes one image of `spec`, its pixels given by `write` (which returns
+/// false on failure), into memory in the format of `path`'s extension, then
+/// writes the bytes all or nothing (geometry/atomic_files.h: every write,
+/// fsync and close checked). OpenImageIO's PNG writer does not report a
+/// failed fwrite (PLATFORM-NOTES.md): on a full disk it wrote a truncated
+/// file and said it succeeded, so no image goes to a file through it.
 template <class Write>
 void write_atomically(const fs::path& path, const OIIO::ImageSpec& spec, Write&& write) {
-  const fs::path tmp = geometry::temporary_beside(path);
+  const char* format = kind_of(path) == ImageKind::png ? "png" : "openexr";
+  std::vector<unsigned char> encoded;
   std::string error;
   {
-    auto out = OIIO::ImageOutput::create(tmp.string());
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    auto out = OIIO::ImageOutput::create(format);
     if (!out) {
       const std::string why = OIIO::geterror();
       note_failure(false, error, why.empty() ? "no OpenImageIO writer for this format" : why);
     } else {
-      bool ok = out->open(tmp.string(), spec);
+      out->set_ioproxy(&memory);
+      bool ok = out->open(path.string(), spec);
       if (ok) ok = write(*out);
-      // close() also flushes; its failure (disk full) counts as a failure.
       const bool closed = out->close();
       note_failure(ok && closed, error, out->geterror());
     }
-  }  // the writer is destroyed here, releasing the file before rename/remove
-  if (error.empty()) {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) error = fmt::format("cannot move the written image into place: {}", ec.message());
   }
   if (!error.empty()) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    // OpenImageIO's messages may name the temporary file and span lines;
-    // the CLI prints one line, so keep the first.
+    // OpenImageIO's messages may span lines; the CLI prints one line.
     error = error.substr(0, error.find('\n'));
     throw InputError(path.string(), "cannot write image: " + error);
   }
+  geometry::write_all_or_nothing(
+      path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 void write_beauty_png(const Frame& frame, const fs::path& path) {

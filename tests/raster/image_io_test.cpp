@@ -7,9 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
+
+#include "../file_size_limit.h"
 
 namespace umbra::raster {
 namespace {
@@ -244,6 +248,62 @@ TEST_F(ImageIoTest, AGapInTheShadowChannelsThrows) {
   } catch (const geometry::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no shadow.1"), std::string::npos) << e.what();
   }
+}
+
+/// Issue 17, row 4: images on a full disk. OpenImageIO's PNG writer does
+/// not report a failed fwrite: before, write_frame returned (the CLI said
+/// "wrote ...", exit 0) and left a truncated file. Under a file size limit
+/// a real write fails with EFBIG; every image must then fail with its path
+/// named, leave no temporary, and keep the previous file at that path.
+void expect_failed_write_leaves_previous(const fs::path& dir, const fs::path& path,
+                                         const std::function<void()>& write) {
+  std::ofstream(path) << "previous";
+  {
+    const test::FileSizeLimit limit(4096);
+    ASSERT_TRUE(limit.active());
+    try {
+      write();
+      ADD_FAILURE() << "the write claimed success";
+    } catch (const geometry::InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path.string() + ": cannot write file: File too large");
+    }
+  }
+  std::ifstream in(path);
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "previous");
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::directory_iterator(dir)) entries.push_back(e.path());
+  EXPECT_EQ(entries, std::vector<fs::path>{path});
+}
+
+/// Noise does not compress: the images are far larger than the limit.
+template <class Plane>
+void fill_with_noise(Plane& values) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> unit(0, 1);
+  for (float& v : values) v = unit(rng);
+}
+
+TEST_F(ImageIoTest, PngOnAFullDiskFailsNamingThePathAndLeavesNothing) {
+  Frame frame(128, 96, 1);
+  fill_with_noise(frame.beauty);
+  expect_failed_write_leaves_previous(dir_, dir_ / "image.png",
+                                      [&] { write_frame(frame, dir_ / "image.png"); });
+}
+
+TEST_F(ImageIoTest, MaskPngOnAFullDiskFailsNamingThePathAndLeavesNothing) {
+  std::vector<float> rgb(128 * 96 * 3);
+  fill_with_noise(rgb);
+  expect_failed_write_leaves_previous(dir_, dir_ / "mask.png",
+                                      [&] { write_rgb_png(dir_ / "mask.png", 128, 96, rgb); });
+}
+
+TEST_F(ImageIoTest, ExrOnAFullDiskFailsNamingThePathAndLeavesNothing) {
+  Frame frame = patterned_frame(128, 96, 2);
+  fill_with_noise(frame.beauty);
+  expect_failed_write_leaves_previous(dir_, dir_ / "image.exr",
+                                      [&] { write_frame(frame, dir_ / "image.exr"); });
 }
 
 }  // namespace
