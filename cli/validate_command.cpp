@@ -10,6 +10,7 @@
 #include <raster/validate.h>
 
 #include <array>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -126,6 +127,13 @@ int run_validate(const ValidateArgs& args) {
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   const double seconds_load = lap();
   const raster::ShadowChannels channels = raster::read_shadow_channels(image);
+  // It was read as the OpenEXR its content is; say so when its name
+  // promised something else.
+  std::string extension = image.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".exr")
+    fmt::print(stderr, "umbra: warning: {}: is an OpenEXR file by its content; read as OpenEXR\n",
+               image.string());
   const double seconds_read = lap();
   raster::ValidateOptions options;
   if (args.samples > 0) options.samples = args.samples;

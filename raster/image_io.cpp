@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <geometry/atomic_files.h>
 #include <geometry/input_error.h>
+#include <geometry/input_file.h>
 #include <raster/image_io.h>
 #include <raster/shading.h>
 
@@ -29,6 +30,20 @@ std::string lowercase(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
+}
+
+/// The image format of `bytes` by their magic numbers, for messages; only
+/// "OpenEXR" is read back.
+const char* content_format(std::string_view bytes) {
+  const auto starts = [&](std::string_view magic) {
+    return bytes.substr(0, magic.size()) == magic;
+  };
+  if (starts("\x76\x2f\x31\x01")) return "OpenEXR";
+  if (starts("\x89PNG\r\n\x1a\n")) return "a PNG image";
+  if (starts("\xff\xd8\xff")) return "a JPEG image";
+  if (starts("II*") || starts("MM\0*")) return "a TIFF image";
+  if (bytes.empty()) return "an empty file";
+  return "not an image umbra knows";
 }
 
 ImageKind kind_of(const fs::path& path) {
@@ -193,14 +208,32 @@ void write_frame(const Frame& frame, const fs::path& path) {
 }
 
 ShadowChannels read_shadow_channels(const fs::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) {
-    std::string error = OIIO::geterror();
-    error = error.substr(0, error.find('\n'));
-    throw InputError(path.string(), "cannot read image: " +
-                                        (error.empty() ? std::string("unknown error") : error));
+  return decode_shadow_channels(geometry::read_input_file(path, "image"), path);
+}
+
+ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& name,
+                                      std::uint64_t max_pixels) {
+  const std::string where = name.string();
+  // The format is the content's, whatever the name says: a PNG renamed
+  // .exr used to be opened as a PNG and fail with "no shadow.0".
+  const char* format = content_format(bytes);
+  if (std::string_view(format) != "OpenEXR") {
+    const bool named_exr = lowercase(name.extension().string()) == ".exr";
+    throw InputError(
+        where, fmt::format("is {} by its content{}; validate needs the shadow.0, shadow.1, ... "
+                           "channels of an OpenEXR file from `umbra render -o NAME.exr`",
+                           format, named_exr ? ", not the OpenEXR its name says" : ""));
   }
-  const OIIO::ImageSpec& spec = in->spec();
+  auto in = OIIO::ImageInput::create("openexr");
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  OIIO::ImageSpec spec;
+  if (!in || !in->set_ioproxy(&memory) || !in->open(where, spec)) {
+    std::string error = in ? in->geterror() : OIIO::geterror();
+    error = error.substr(0, error.find('\n'));
+    throw InputError(
+        where, "cannot read image: " + (error.empty() ? std::string("unknown error") : error));
+  }
+  spec = in->spec();
 
   // Channel position by light index; std::map keeps indices sorted whatever
   // order the file lists them in (EXR sorts "shadow.10" before "shadow.2").
@@ -210,36 +243,67 @@ ShadowChannels read_shadow_channels(const fs::path& path) {
     if (index >= 0) by_light.emplace(index, c);
   }
   if (!by_light.contains(0))
-    throw InputError(path.string(),
-                     "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
+    throw InputError(where, "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
   long expected = 0;
   for (const auto& [index, channel] : by_light) {
     if (index != expected)
-      throw InputError(path.string(),
-                       fmt::format("has shadow.{} but no shadow.{}", index, expected));
+      throw InputError(where, fmt::format("has shadow.{} but no shadow.{}", index, expected));
     ++expected;
   }
 
-  if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
-    throw InputError(path.string(), fmt::format("unexpected image size {}x{}x{}", spec.width,
-                                                spec.height, spec.depth));
-  const std::size_t n = static_cast<std::size_t>(spec.width) * spec.height;
-  const std::size_t nch = static_cast<std::size_t>(spec.nchannels);
-  std::vector<float> pixels(n * nch);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-    std::string error = in->geterror();
-    error = error.substr(0, error.find('\n'));
-    throw InputError(path.string(), "cannot read image: " + error);
-  }
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.deep)
+    throw InputError(where, fmt::format("unexpected image size {}x{}x{}{}", spec.width, spec.height,
+                                        spec.depth, spec.deep ? " (deep)" : ""));
+  // Pixel (i, j) of the file is compared with sample (i, j) of the scene's
+  // camera: a data window moved off the display window (origin +5+5 or
+  // -1-1) would compare every pixel with the wrong sample.
+  if (spec.x != 0 || spec.y != 0 || spec.full_x != 0 || spec.full_y != 0 ||
+      spec.full_width != spec.width || spec.full_height != spec.height)
+    throw InputError(
+        where, fmt::format("data window ({}, {}) to ({}, {}) is not the display window ({}, {}) "
+                           "to ({}, {}); umbra render writes them equal, from (0, 0)",
+                           spec.x, spec.y, spec.x + spec.width - 1, spec.y + spec.height - 1,
+                           spec.full_x, spec.full_y, spec.full_x + spec.full_width - 1,
+                           spec.full_y + spec.full_height - 1));
+  const std::uint64_t n64 = static_cast<std::uint64_t>(spec.width) * spec.height;
+  if (n64 > max_pixels)
+    throw InputError(where, fmt::format("{}x{} pixels is more than the {} pixels a render can have",
+                                        spec.width, spec.height, max_pixels));
+  const std::size_t n = static_cast<std::size_t>(n64);
+  const std::size_t width = static_cast<std::size_t>(spec.width);
 
   ShadowChannels result;
   result.width = spec.width;
   result.height = spec.height;
-  result.shadow.reserve(by_light.size());
-  for (const auto& [index, channel] : by_light) {
-    PixelPlane plane(n);
-    for (std::size_t p = 0; p < n; ++p) plane[p] = pixels[p * nch + channel];
-    result.shadow.push_back(std::move(plane));
+  result.shadow.assign(by_light.size(), PixelPlane(n));
+  // The channels from the first shadow channel to the last, a block of rows
+  // at a time: the memory stays that of the planes, whatever other channels
+  // (or how many) the file holds.
+  const int first = std::min_element(by_light.begin(), by_light.end(), [](auto& a, auto& b) {
+                      return a.second < b.second;
+                    })->second;
+  const int last = std::max_element(by_light.begin(), by_light.end(), [](auto& a, auto& b) {
+                     return a.second < b.second;
+                   })->second;
+  const std::size_t span = static_cast<std::size_t>(last - first + 1);
+  constexpr int kBlockRows = 64;
+  std::vector<float> block(static_cast<std::size_t>(kBlockRows) * width * span);
+  for (int y0 = 0; y0 < spec.height; y0 += kBlockRows) {
+    const int y1 = std::min(spec.height, y0 + kBlockRows);
+    if (!in->read_scanlines(0, 0, y0, y1, 0, first, last + 1, OIIO::TypeDesc::FLOAT,
+                            block.data())) {
+      std::string error = in->geterror();
+      error = error.substr(0, error.find('\n'));
+      throw InputError(where, "cannot read image: " + error);
+    }
+    const std::size_t base = static_cast<std::size_t>(y0) * width;
+    const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * width;
+    std::size_t light = 0;
+    for (const auto& [index, channel] : by_light) {
+      PixelPlane& plane = result.shadow[light++];
+      const std::size_t c = static_cast<std::size_t>(channel - first);
+      for (std::size_t p = 0; p < pixels; ++p) plane[base + p] = block[p * span + c];
+    }
   }
   return result;
 }

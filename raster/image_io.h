@@ -2,7 +2,9 @@
 // The one file that touches image files (through OpenImageIO).
 #include <raster/frame.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <string_view>
 #include <vector>
 
 namespace umbra::raster {
@@ -15,6 +17,9 @@ namespace umbra::raster {
 /// write failure.
 void write_frame(const Frame& frame, const std::filesystem::path& path);
 
+/// The largest image read back: a render is at most 16384 x 16384 pixels.
+inline constexpr std::uint64_t kMaxImagePixels = 16384ull * 16384ull;
+
 /// The AOVs that validate needs, read back from an EXR written by write_frame
 /// (channels found by name). Throws geometry::InputError when the file cannot
 /// be read or has no `shadow.0`.
@@ -24,6 +29,16 @@ struct ShadowChannels {
   std::vector<PixelPlane> shadow;  ///< shadow.0, shadow.1, ... in order
 };
 ShadowChannels read_shadow_channels(const std::filesystem::path& path);
+
+/// Same, from the file's bytes; `name` names it in messages. The format is
+/// decided by the content (magic numbers), not the name: anything but
+/// OpenEXR is refused, saying what it is. Also refused: a data window other
+/// than the display window at (0, 0), deep images, and more than
+/// `max_pixels` pixels (checked before any pixel is allocated).
+/// read_shadow_channels reads the file through geometry::read_input_file
+/// (regular files only, size limit) and calls this.
+ShadowChannels decode_shadow_channels(std::string_view bytes, const std::filesystem::path& name,
+                                      std::uint64_t max_pixels = kMaxImagePixels);
 
 /// Writes an 8-bit RGB PNG from 3 floats a pixel in [0, 1], written as they are
 /// (no gamma). Same atomicity and errors as write_frame.

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -304,6 +305,95 @@ TEST_F(ImageIoTest, ExrOnAFullDiskFailsNamingThePathAndLeavesNothing) {
   fill_with_noise(frame.beauty);
   expect_failed_write_leaves_previous(dir_, dir_ / "image.exr",
                                       [&] { write_frame(frame, dir_ / "image.exr"); });
+}
+
+/// Writes a one-light EXR of w x h whose data window starts at (x, y) in a
+/// display window of the same size at (0, 0).
+void write_exr_with_data_window(const fs::path& path, int w, int h, int x, int y) {
+  OIIO::ImageSpec spec(w, h, 1, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"shadow.0"};
+  spec.x = x;
+  spec.y = y;
+  spec.full_x = 0;
+  spec.full_y = 0;
+  spec.full_width = w;
+  spec.full_height = h;
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out && out->open(path.string(), spec));
+  const std::vector<float> pixels(static_cast<std::size_t>(w) * h, 1.0f);
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+  ASSERT_TRUE(out->close());
+}
+
+std::string read_error(const fs::path& path) {
+  try {
+    read_shadow_channels(path);
+  } catch (const geometry::InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(ImageIoTest, MovedDataWindowIsRefused) {
+  // Issue 17, row 13: before, a data window moved to +5+5 or -1-1 was
+  // compared as if it started at (0, 0).
+  write_exr_with_data_window(dir_ / "plus.exr", 8, 6, 5, 5);
+  EXPECT_EQ(read_error(dir_ / "plus.exr"),
+            (dir_ / "plus.exr").string() +
+                ": data window (5, 5) to (12, 10) is not the display window (0, 0) to (7, 5); "
+                "umbra render writes them equal, from (0, 0)");
+  write_exr_with_data_window(dir_ / "minus.exr", 8, 6, -1, -1);
+  EXPECT_NE(read_error(dir_ / "minus.exr").find("data window (-1, -1) to (6, 4) is not"),
+            std::string::npos);
+  write_exr_with_data_window(dir_ / "zero.exr", 8, 6, 0, 0);
+  EXPECT_EQ(read_shadow_channels(dir_ / "zero.exr").shadow.size(), 1u);
+}
+
+TEST_F(ImageIoTest, PngNamedExrIsRefusedByItsContent) {
+  // Before: opened as the PNG it is, then "has no shadow.0 channel".
+  write_frame(patterned_frame(4, 3, 1), dir_ / "beauty.png");
+  fs::rename(dir_ / "beauty.png", dir_ / "render.exr");
+  EXPECT_EQ(read_error(dir_ / "render.exr"),
+            (dir_ / "render.exr").string() +
+                ": is a PNG image by its content, not the OpenEXR its name says; validate needs "
+                "the shadow.0, shadow.1, ... channels of an OpenEXR file from `umbra render -o "
+                "NAME.exr`");
+}
+
+TEST_F(ImageIoTest, ExrNamedPngIsReadByItsContent) {
+  const Frame frame = patterned_frame(4, 3, 2);
+  write_frame(frame, dir_ / "render.exr");
+  fs::rename(dir_ / "render.exr", dir_ / "render.png");
+  const ShadowChannels read = read_shadow_channels(dir_ / "render.png");
+  ASSERT_EQ(read.shadow.size(), 2u);
+  EXPECT_EQ(read.shadow[1], frame.shadow[1]);
+}
+
+TEST_F(ImageIoTest, DevicesAndHugeClaimsAreRefusedBeforeReading) {
+  // Issue 17, row 7: before, validate --image /dev/zero never returned.
+  EXPECT_EQ(read_error("/dev/zero"),
+            "/dev/zero: cannot read image file: is a character device; umbra reads only regular "
+            "files");
+  write_frame(patterned_frame(40, 30, 1), dir_ / "big.exr");
+  const std::string name = (dir_ / "big.exr").string();
+  std::ifstream in(name, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  try {
+    decode_shadow_channels(bytes, name, 1000);
+    ADD_FAILURE() << "no error";
+  } catch (const geometry::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              name + ": 40x30 pixels is more than the 1000 pixels a render can have");
+  }
+}
+
+TEST_F(ImageIoTest, ManyLightsReadInBlocksOfRows) {
+  // More rows than one block (64) and channels beyond the shadow ones.
+  const Frame frame = patterned_frame(3, 150, 11);
+  write_frame(frame, dir_ / "tall.exr");
+  const ShadowChannels read = read_shadow_channels(dir_ / "tall.exr");
+  ASSERT_EQ(read.shadow.size(), 11u);
+  for (std::size_t i = 0; i < 11; ++i) EXPECT_EQ(read.shadow[i], frame.shadow[i]) << i;
 }
 
 }  // namespace
