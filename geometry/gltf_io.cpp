@@ -12,6 +12,7 @@
 // positions from buffers widen exactly to double. Node transforms are
 // composed and applied in doubles in the documented order (no FMA: the build
 // uses -ffp-contract=off).
+#include <geometry/coordinate_range.h>
 #include <geometry/gltf_io.h>
 #include <geometry/gltf_json_checks.h>
 #include <geometry/gltf_matrix.h>
@@ -239,11 +240,16 @@ class GltfReader {
       Light& light = lights[l];
       if (light.type == LightType::point) {
         light.position = transform_point(world, {0, 0, 0});
-        if (!is_finite(light.position)) fail(path, "the light's world position is not finite");
+        if (!within_coordinate_range(light.position))
+          fail(path, "the light's world position is not finite or outside ±2^500 (~3.27e150)");
       } else {
         light.direction = transform_direction(world, {0, 0, -1});
         if (!is_finite(light.direction) || light.direction == Vec3{0, 0, 0})
           fail(path, "the light's world direction is zero or not finite");
+        if (!normalizable_direction(light.direction))
+          fail(path,
+               "the light's world direction cannot be normalized in doubles: its largest "
+               "component must be between 2^-500 and 2^500 in magnitude");
       }
     });
     for (std::size_t l = 0; l < lights.size(); ++l)
@@ -621,6 +627,10 @@ class GltfReader {
     for (std::size_t i = 0; i < local.size(); ++i) {
       const Vec3 p = transform_point(world, local[i]);
       if (!is_finite(p)) fail(path, "a vertex transformed to world space is not finite");
+      if (!within_coordinate_range(p))
+        fail(path, "vertex " + std::to_string(i) +
+                       " in world space is outside ±2^500 (~3.27e150), the range where umbra's "
+                       "arithmetic is exact");
       remap[i] = welder.add(p);
     }
     const bool flip = mirrors(world);
@@ -769,7 +779,8 @@ class GltfReader {
     camera.look_at = camera.eye + forward;
     camera.up = transform_direction(world, {0, 1, 0});
     const CameraFrame frame = camera_frame(camera);
-    if (!is_finite(camera.eye) || !is_finite(camera.look_at) || camera.look_at == camera.eye ||
+    if (!within_coordinate_range(camera.eye) || !within_coordinate_range(camera.look_at) ||
+        camera.look_at == camera.eye ||
         cross(camera.look_at - camera.eye, camera.up) == Vec3{0, 0, 0} || !is_finite(frame.f) ||
         !is_finite(frame.r) || !is_finite(frame.u) || frame.r == Vec3{0, 0, 0})
       fail(path,

@@ -10,6 +10,13 @@
 
 namespace umbra::geometry {
 
+std::string polygon_too_large(std::uint64_t n) {
+  return "face has " + std::to_string(n) + " vertices; umbra reads polygons of at most " +
+         std::to_string(kMaxPolygonVertices) +
+         " (the twist test's time grows with the square of a polygon's size): split or "
+         "triangulate it";
+}
+
 PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::path& name) {
   const std::string where = name.string();
   const std::string extension = detail::to_lower(name.extension().string());

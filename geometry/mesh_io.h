@@ -4,11 +4,26 @@
 // and keeps the doubles the text (or binary double) denotes.
 #include <geometry/scene.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace umbra::geometry {
+
+/// The most vertices a polygon may have (issue 17, row 8). The L-twist test
+/// (DESIGN.md) compares every pair of a polygon's edges for every light, so
+/// a polygon of n vertices costs time in n²: 4,096 vertices take about a
+/// second per light on a 2-core machine of 2026, 40,000 took 112 s, a
+/// million would take about 19 hours. Larger polygons are refused at load,
+/// before they are stored, in one line naming the face: split or
+/// triangulate them (docs/scene-format.md).
+inline constexpr std::size_t kMaxPolygonVertices = 4096;
+
+/// The message for a face of `n` > kMaxPolygonVertices vertices.
+std::string polygon_too_large(std::uint64_t n);
 
 /// Vertices and polygons as the file gives them: polygons of any size are kept
 /// whole (never triangulated), indices 0-based into `vertices`.

@@ -86,6 +86,7 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
         throw InputError(where,
                          "face has " + std::to_string(n) + " vertices; at least 3 are needed");
       }
+      if (n > kMaxPolygonVertices) throw InputError(where, polygon_too_large(n));
       Polygon polygon;
       polygon.reserve(n);
       while (tokens.next(token))

@@ -127,6 +127,8 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
     if (n < 3) {
       throw InputError(where, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
     }
+    if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
+      throw InputError(where, polygon_too_large(static_cast<std::uint64_t>(n)));
     Polygon polygon;
     polygon.reserve(static_cast<std::size_t>(n));
     for (std::int64_t k = 0; k < n; ++k) {

@@ -383,6 +383,8 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
             throw InputError(at,
                              "face has " + std::to_string(n) + " vertices; at least 3 are needed");
           }
+          if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
+            throw InputError(at, polygon_too_large(static_cast<std::uint64_t>(n)));
           Polygon polygon;
           polygon.reserve(static_cast<std::size_t>(n));
           for (std::int64_t k = 0; k < n; ++k) {

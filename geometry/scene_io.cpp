@@ -5,6 +5,8 @@
 // double (1e999) and duplicated keys by their field path. Validation then
 // walks the document once, naming each field by its path
 // ("lights[1].position"); unknown keys are errors so that typos never pass.
+#include <fmt/format.h>
+#include <geometry/coordinate_range.h>
 #include <geometry/gltf_io.h>
 #include <geometry/input_error.h>
 #include <geometry/input_file.h>
@@ -198,6 +200,31 @@ class SceneReader {
     return {number(v[0], item(path, 0)), number(v[1], item(path, 1)), number(v[2], item(path, 2))};
   }
 
+  /// A position: a vector within ±kMaxCoordinate (coordinate_range.h).
+  Vec3 point(const Json& v, const std::string& path) const {
+    const Vec3 p = vec3(v, path);
+    if (!within_coordinate_range(p)) fail(path, out_of_range(p));
+    return p;
+  }
+
+  /// A direction: a nonzero vector that normalizes in doubles.
+  Vec3 direction(const Json& v, const std::string& path) const {
+    const Vec3 d = vec3(v, path);
+    if (d == Vec3{0, 0, 0}) fail(path, "must not be the zero vector");
+    if (!normalizable_direction(d))
+      fail(path, fmt::format("({}, {}, {}) cannot be normalized in doubles: its largest component "
+                             "must be between 2^-500 and 2^500 in magnitude",
+                             d.x, d.y, d.z));
+    return d;
+  }
+
+  static std::string out_of_range(const Vec3& p) {
+    return fmt::format(
+        "({}, {}, {}) is outside ±2^500 (~3.27e150), the range where umbra's "
+        "arithmetic is exact (docs/scene-format.md, \"Numbers\")",
+        p.x, p.y, p.z);
+  }
+
   Rgb rgb(const Json& v, const std::string& path) const {
     const Vec3 c = vec3(v, path);
     for (int i = 0; i < 3; ++i) {
@@ -232,8 +259,8 @@ Camera read_camera(const SceneReader& in, const Json& v) {
   in.expect_object(v, path);
   in.check_keys(v, path, {"eye", "look_at", "up", "fov_y_deg", "width", "height"});
   Camera camera;
-  camera.eye = in.vec3(in.required(v, "eye", path), "camera.eye");
-  camera.look_at = in.vec3(in.required(v, "look_at", path), "camera.look_at");
+  camera.eye = in.point(in.required(v, "eye", path), "camera.eye");
+  camera.look_at = in.point(in.required(v, "look_at", path), "camera.look_at");
   if (v.contains("up")) camera.up = in.vec3(v["up"], "camera.up");
   if (v.contains("fov_y_deg")) {
     camera.fov_y_deg = in.number(v["fov_y_deg"], "camera.fov_y_deg");
@@ -271,7 +298,7 @@ Light read_light(const SceneReader& in, const Json& v, const std::string& path) 
   if (type == "point") {
     light.type = LightType::point;
     in.check_keys(v, path, {"type", "position", "intensity", "dec_begin", "light_end", "decrease"});
-    light.position = in.vec3(in.required(v, "position", path), child(path, "position"));
+    light.position = in.point(in.required(v, "position", path), child(path, "position"));
   } else if (type == "directional") {
     light.type = LightType::directional;
     for (const char* key : {"dec_begin", "light_end", "decrease"}) {
@@ -281,9 +308,7 @@ Light read_light(const SceneReader& in, const Json& v, const std::string& path) 
       }
     }
     in.check_keys(v, path, {"type", "direction", "intensity"});
-    light.direction = in.vec3(in.required(v, "direction", path), child(path, "direction"));
-    if (light.direction == Vec3{0, 0, 0})
-      in.fail(child(path, "direction"), "must not be the zero vector");
+    light.direction = in.direction(in.required(v, "direction", path), child(path, "direction"));
   } else {
     in.fail(child(path, "type"),
             "unknown light type '" + type + "'; expected point or directional");
@@ -296,6 +321,10 @@ Light read_light(const SceneReader& in, const Json& v, const std::string& path) 
   if (v.contains("light_end")) {
     const double end = in.number(v["light_end"], child(path, "light_end"));
     if (!(end > 0)) in.fail(child(path, "light_end"), "must be > 0");
+    if (end > kMaxCoordinate)
+      in.fail(child(path, "light_end"),
+              "must be at most 2^500 (~3.27e150), the range where "
+              "umbra's arithmetic is exact");
     if (end < light.dec_begin) in.fail(child(path, "light_end"), "must be >= dec_begin");
     light.light_end = end;
   }
@@ -352,6 +381,7 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
       in.fail(face_path,
               "face has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
     }
+    if (face.size() > kMaxPolygonVertices) in.fail(face_path, polygon_too_large(face.size()));
     Polygon polygon;
     polygon.reserve(face.size());
     for (std::size_t k = 0; k < face.size(); ++k) {
@@ -420,6 +450,14 @@ Model read_model(const SceneReader& in, const Json& v, std::size_t index,
     const Vec3 world = apply(transform, p);
     if (!is_finite(world)) in.fail(child(path, "transform"), "a transformed vertex is not finite");
     model.vertices.push_back(world);
+  }
+  for (std::size_t k = 0; k < model.vertices.size(); ++k) {
+    if (within_coordinate_range(model.vertices[k])) continue;
+    // Name what put it there: the transform, else the vertex as given.
+    const std::string at = v.contains("transform") ? child(path, "transform")
+                           : has_mesh              ? child(path, "mesh")
+                                      : item(child(child(path, "polygons"), "vertices"), k);
+    in.fail(at, "vertex " + std::to_string(k) + " " + SceneReader::out_of_range(model.vertices[k]));
   }
   model.polygons = std::move(soup.polygons);
   return model;

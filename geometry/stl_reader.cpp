@@ -124,6 +124,8 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
         p.y = number(true);
         p.z = number(true);
         polygon.push_back(merger.add(p));
+        if (polygon.size() > kMaxPolygonVertices)
+          throw InputError(at_line(name, facet_line), polygon_too_large(polygon.size()));
       }
       if (polygon.size() < 3) {
         throw InputError(at_line(name, facet_line), "facet has " + std::to_string(polygon.size()) +

@@ -1,6 +1,7 @@
 #include <geometry/contour.h>
 #include <geometry/model_tables.h>
 #include <geometry/scene_index.h>
+#include <raster/float_range.h>
 #include <raster/render.h>
 #include <raster/render_methods.h>
 #include <raster/supersample.h>
@@ -29,6 +30,10 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
     centre.spp = 1;
     return downsample(render(fine, centre, stats), s);
   }
+  // Before any work: a scene the float methods cannot represent is bad
+  // input for them, not a render with silently wrong (or no) answers.
+  if (options.method == Method::map) check_float_range(scene, "map");
+  if (options.method == Method::ray) check_float_range(scene, "ray");
   RenderStats local;
   RenderStats& s = stats ? *stats : local;
   s = RenderStats{};

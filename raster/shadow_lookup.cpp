@@ -42,9 +42,18 @@ double plane_depth(const MapView& view, const ViewPlane& plane, double u, double
 /// Whether a receiver at depth `z` sees the light past stored depth `stored`.
 bool passes(double z, float stored, double bias) { return z <= static_cast<double>(stored) + bias; }
 
-int clamp_texel(double x, int size) {
-  return static_cast<int>(std::clamp(std::floor(x), 0.0, static_cast<double>(size - 1)));
+/// floor(x) as an int, saturated far outside any buffer: converting a NaN
+/// or a double beyond int's range to int is undefined (a NaN from a model
+/// scaled by 1e104 became INT_MIN, a texel index, a SIGSEGV). NaN saturates
+/// low. For |x| < 2^30 this is exactly static_cast<int>(std::floor(x)).
+int floor_to_int(double x) {
+  constexpr double kFar = 1 << 30;
+  if (!(x > -kFar)) return -(1 << 30);
+  if (x >= kFar) return 1 << 30;
+  return static_cast<int>(std::floor(x));
 }
+
+int clamp_texel(double x, int size) { return std::clamp(floor_to_int(x), 0, size - 1); }
 
 /// Williams' "interpolation": the stored depth bilinearly interpolated at
 /// (u, v) and compared once. Where one of the four texels holds no occluder
@@ -74,14 +83,14 @@ double filtered(const MapView& view, const DepthMap& map, const ViewPlane& plane
   int i0, j0, taps;
   double fx = 0, fy = 0;
   if (bilinear) {
-    i0 = static_cast<int>(std::floor(u - 0.5)) - r;
-    j0 = static_cast<int>(std::floor(v - 0.5)) - r;
+    i0 = floor_to_int(u - 0.5) - r;
+    j0 = floor_to_int(v - 0.5) - r;
     fx = (u - 0.5) - std::floor(u - 0.5);
     fy = (v - 0.5) - std::floor(v - 0.5);
     taps = k + 1;
   } else {
-    i0 = static_cast<int>(std::floor(u)) - r;
-    j0 = static_cast<int>(std::floor(v)) - r;
+    i0 = floor_to_int(u) - r;
+    j0 = floor_to_int(v) - r;
     taps = k;
   }
   const auto weight = [&](int a, double f) {

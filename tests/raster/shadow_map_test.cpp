@@ -11,6 +11,7 @@
 #include <raster/validate.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace umbra::raster {
@@ -274,6 +275,34 @@ TEST(ShadowMap, RejectsSettingsOutsideTheirRange) {
   EXPECT_THROW(render(scene, map_options({.resolution = 0})), std::invalid_argument);
   EXPECT_THROW(render(scene, map_options({.pcf = 4})), std::invalid_argument);
   EXPECT_THROW(render(scene, map_options({.slope_bias = -1})), std::invalid_argument);
+}
+
+TEST(ShadowLookup, NanLookupPositionReadsADefinedTexel) {
+  // Issue 17, row 3: a model scaled by 1e104 gave a NaN texel coordinate;
+  // clamp_texel cast it to int (undefined: INT_MIN here) and indexed the
+  // map with it, a SIGSEGV. Every lookup kind must read texels of the map.
+  geometry::Box bounds;
+  bounds.extend(geometry::Vec3{-1, 0, -1});
+  bounds.extend(geometry::Vec3{1, 1, 1});
+  const MapView view = directional_view({0, -1, 0}, bounds, 16, 3);
+  const std::vector<Occluder> occluders = {
+      {{{-1, 0.5, -1}, {1, 0.5, -1}, {1, 0.5, 1}, {-1, 0.5, 1}}}};
+  const DepthMap map = rasterize_depth(view, occluders, 1);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const MapLookup lookup : {MapLookup::nearest, MapLookup::bilinear}) {
+    for (const int pcf : {1, 3, 5}) {
+      ShadowMapOptions options;
+      options.lookup = lookup;
+      options.pcf = pcf;
+      for (const geometry::Vec3 point :
+           {geometry::Vec3{nan, 0, 0}, geometry::Vec3{1e300, 0, -1e300}}) {
+        const double lit = lit_fraction(view, map, {point, {0, 1, 0}}, options, {nan, 0});
+        // A fraction (NaN where a NaN weight took part: bilinear PCF), read
+        // from texels inside the map: AddressSanitizer checks the reads.
+        EXPECT_TRUE(std::isnan(lit) || (lit >= 0 && lit <= 1)) << "pcf " << pcf << ": " << lit;
+      }
+    }
+  }
 }
 
 }  // namespace
