@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #ifndef UMBRA_VERSION
@@ -105,6 +106,13 @@ int main(int argc, char** argv) {
     return kExitInternal;
   } catch (const umbra::geometry::InputError& e) {
     fmt::print(stderr, "umbra: {}\n", one_line(e.what()));
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    // Out of memory wherever it happened (a worker thread's is rethrown
+    // here): a resource the machine lacks, not a bug.
+    fmt::print(stderr,
+               "umbra: out of memory: the input needs more than this machine allows (see "
+               "--memory-limit)\n");
     return kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "umbra: internal error: {}\n", one_line(e.what()));

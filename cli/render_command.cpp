@@ -1,4 +1,5 @@
 #include <cli/exit_codes.h>
+#include <cli/memory_limit.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
@@ -8,8 +9,10 @@
 #include <geometry/input_error.h>
 #include <geometry/scene_io.h>
 #include <raster/image_io.h>
+#include <raster/memory_estimate.h>
 #include <raster/render.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -110,6 +113,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Write timings per phase and counts as JSON to FILE ('-' = stdout)")
       ->check(non_empty_path())
       ->type_name("FILE");
+  cmd->add_option("--memory-limit", args.memory_limit,
+                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
+                  "G, T); default: the cgroup limit or MemAvailable, the smaller")
+      ->check(memory_size())
+      ->type_name("SIZE");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
   cmd->add_option("--spp", args.spp,
                   "Beauty samples per pixel: 1, 9 or 25 (an odd grid; shadow.<i>, count.<i> and "
@@ -158,6 +166,13 @@ int run_render(const RenderArgs& args) {
   options.spp = args.spp;
   options.map = map_options(args);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
+  std::string extension = output.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool exr = extension == ".exr";
+  check_memory(raster::estimate_render_bytes(scene, options, exr), memory_limit(args.memory_limit),
+               scene_path.string(),
+               fmt::format("rendering {}x{} with {} (--method {})", scene.camera.width,
+                           scene.camera.height, lights_text(scene.lights.size()), args.method));
   ProgressBar bar(!args.quiet);
   options.progress = bar.callback();
   raster::RenderStats stats;

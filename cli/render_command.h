@@ -13,6 +13,7 @@ struct RenderArgs {
   std::string method = "volume";  ///< volume, map, ray or exact (checked by the parser)
   unsigned threads = 0;           ///< 0: all hardware threads
   std::string stats_json;         ///< empty: none; "-": stdout
+  std::string memory_limit;       ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
   bool no_shadows = false;  ///< the plain render (volume method only)
   int spp = 1;              ///< beauty samples per pixel: 1, 9 or 25

@@ -1,4 +1,5 @@
 #include <cli/exit_codes.h>
+#include <cli/memory_limit.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 #include <geometry/scene_io.h>
 #include <raster/image_io.h>
+#include <raster/memory_estimate.h>
 #include <raster/validate.h>
 
 #include <array>
@@ -87,6 +89,11 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
   cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
       ->check(thread_count())
       ->type_name("N");
+  cmd->add_option("--memory-limit", args.memory_limit,
+                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
+                  "G, T); default: the cgroup limit or MemAvailable, the smaller")
+      ->check(memory_size())
+      ->type_name("SIZE");
   cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write the report and timings per phase as JSON to FILE ('-' = stdout)")
@@ -125,6 +132,9 @@ int run_validate(const ValidateArgs& args) {
 
   const geometry::Scene scene = geometry::load_scene(args.scene);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
+  check_memory(raster::estimate_validate_bytes(scene), memory_limit(args.memory_limit), args.scene,
+               fmt::format("validating {}x{} with {}", scene.camera.width, scene.camera.height,
+                           lights_text(scene.lights.size())));
   const double seconds_load = lap();
   const raster::ShadowChannels channels = raster::read_shadow_channels(image);
   // It was read as the OpenEXR its content is; say so when its name

@@ -15,6 +15,7 @@ struct ValidateArgs {
   bool json = false;
   std::string mask;  ///< empty: <image stem>.mismatches.png beside the image
   unsigned threads = 0;
+  std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
   std::string stats_json;  ///< empty: none; "-": stdout (the report plus timings)
 };

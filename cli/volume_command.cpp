@@ -1,4 +1,5 @@
 #include <cli/exit_codes.h>
+#include <cli/memory_limit.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
 #include <cli/stats_json.h>
@@ -8,6 +9,7 @@
 #include <geometry/scene_io.h>
 #include <geometry/volume_builder.h>
 #include <geometry/volume_export.h>
+#include <raster/memory_estimate.h>
 
 #include <chrono>
 #include <cstdio>
@@ -55,6 +57,11 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
                   "output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
+  cmd->add_option("--memory-limit", args.memory_limit,
+                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
+                  "G, T); default: the cgroup limit or MemAvailable, the smaller")
+      ->check(memory_size())
+      ->type_name("SIZE");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
@@ -91,6 +98,8 @@ int run_volume(const VolumeArgs& args) {
   auto phase = std::chrono::steady_clock::now();
   const geometry::Scene scene = geometry::load_scene(scene_path);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
+  check_memory(raster::estimate_volume_bytes(scene), memory_limit(args.memory_limit),
+               scene_path.string(), "building the volumes of " + lights_text(scene.lights.size()));
   timings.load = seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();

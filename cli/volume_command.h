@@ -7,8 +7,9 @@ namespace umbra::cli {
 
 struct VolumeArgs {
   std::string scene;
-  std::string output;      ///< .ply, .obj or .off (checked before any work)
-  std::string stats_json;  ///< empty: none; "-": stdout
+  std::string output;        ///< .ply, .obj or .off (checked before any work)
+  std::string stats_json;    ///< empty: none; "-": stdout
+  std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
   unsigned threads = 0;  ///< lights built in parallel; 0 = all hardware threads
 };
