@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer
+# (issue 17): clang 14 (docs/fuzzing.md's compiler; GCC works too with
+# CXX=g++), every target built with -fsanitize=address,undefined and
+# -fno-sanitize-recover=undefined (UMBRA_SANITIZE=ON), then ctest.
+#   scripts/sanitize.sh [-j N] [CTEST_ARGS...]   # e.g. -R GltfPathRule
+# Build tree: build-asan/ (kept, so a second run only rebuilds what changed).
+# Takes ~25 min to build on 2 cores and ~15 min to test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=2
+if [ "${1:-}" = "-j" ]; then jobs=$2; shift 2; fi
+: "${CXX:=clang++-14}"
+export CXX
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUMBRA_SANITIZE=ON \
+  -DUMBRA_BUILD_BENCH=OFF
+cmake --build build-asan -j "$jobs"
+# halt_on_error: the first report fails its test. Leaks are reported too;
+# the suppressions name the leaks of Debian's libraries, none of umbra's.
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
+ctest --test-dir build-asan -j "$jobs" --output-on-failure --timeout 1800 "$@"
