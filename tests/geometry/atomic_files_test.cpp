@@ -12,18 +12,14 @@
 #include <string>
 
 #include "../file_size_limit.h"
+#include "work_dir.h"
 
 namespace umbra::geometry {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::path(UMBRA_TEST_WORK_DIR) / "atomic_files" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path work_dir(const std::string& name) { return test::work_dir("atomic_files", name); }
 
 std::string read(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -34,7 +30,7 @@ TEST(AtomicFiles, FailedWriteLeavesThePreviousFilesAndNoTemporary) {
   const fs::path dir = work_dir("size_limit");
   std::ofstream(dir / "a.json") << "old a";
   {
-    const test::FileSizeLimit limit(1000);
+    const umbra::test::FileSizeLimit limit(1000);
     ASSERT_TRUE(limit.active());
     // The first file fits, the second does not: neither may appear.
     try {

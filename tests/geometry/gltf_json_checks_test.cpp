@@ -15,6 +15,7 @@
 
 #include "gltf_fixture.h"
 #include "input_error_matchers.h"
+#include "work_dir.h"
 
 namespace umbra::geometry {
 namespace {
@@ -25,10 +26,7 @@ using Json = nlohmann::json;
 using test::error_of;
 
 fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::path(UMBRA_TEST_WORK_DIR) / "gltf_json_checks" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return fs::canonical(dir);
+  return fs::canonical(test::work_dir("gltf_json_checks", name));
 }
 
 GltfFixture triangle_scene() {

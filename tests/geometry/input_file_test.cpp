@@ -14,6 +14,7 @@
 #include <string>
 
 #include "input_error_matchers.h"
+#include "work_dir.h"
 
 namespace umbra::geometry {
 namespace {
@@ -26,13 +27,7 @@ using test::error_of;
   return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
 }
 
-/// A fresh folder under the build tree for this test.
-fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::path(UMBRA_TEST_WORK_DIR) / "input_file" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path work_dir(const std::string& name) { return test::work_dir("input_file", name); }
 
 void write(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

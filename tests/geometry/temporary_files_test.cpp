@@ -14,18 +14,14 @@
 #include <string>
 
 #include "../child_process.h"
+#include "work_dir.h"
 
 namespace umbra::geometry {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path work_dir(const std::string& name) {
-  const fs::path dir = fs::path(UMBRA_TEST_WORK_DIR) / "temporary_files" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path work_dir(const std::string& name) { return test::work_dir("temporary_files", name); }
 
 void expect_removed_on(int signal_number, const std::string& name) {
   const fs::path dir = work_dir(name);
@@ -34,7 +30,7 @@ void expect_removed_on(int signal_number, const std::string& name) {
   std::ofstream(kept) << "done";
   // The child calls no allocating function: other threads of the test
   // runner may have held malloc's lock when it was forked.
-  const int status = test::run_in_child([&] {
+  const int status = umbra::test::run_in_child([&] {
     remove_temporaries_on_signals();
     const TemporaryFileGuard guard(tmp);
     if (!guard.registered()) return 10;
@@ -58,7 +54,7 @@ TEST(TemporaryFiles, ReleasedGuardLeavesTheFileAlone) {
   // at that path is no longer the handler's business.
   const fs::path dir = work_dir("released");
   const fs::path path = dir / "result.png";
-  const int status = test::run_in_child([&] {
+  const int status = umbra::test::run_in_child([&] {
     remove_temporaries_on_signals();
     { const TemporaryFileGuard guard(path); }
     const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
