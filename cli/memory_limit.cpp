@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace umbra::cli {
 
@@ -58,7 +57,6 @@ std::optional<std::uint64_t> cgroup_limit() {
     }
   }
   if (!v1.empty()) {
-    namespace fs = std::filesystem;
     const fs::path own = fs::path("/sys/fs/cgroup/memory") / fs::path(v1).relative_path();
     take(first_line(own / "memory.limit_in_bytes"), first_line(own / "memory.usage_in_bytes"));
     take(first_line("/sys/fs/cgroup/memory/memory.limit_in_bytes"),
@@ -123,14 +121,19 @@ std::optional<std::uint64_t> parse_memory_size(const std::string& text) {
   return static_cast<std::uint64_t>(bytes);
 }
 
-CLI::Validator memory_size() {
-  return CLI::Validator(
+void add_memory_limit_option(CLI::App* cmd, std::string& value) {
+  const CLI::Validator size(
       [](std::string& text) -> std::string {
         if (!parse_memory_size(text))
           return "'" + text + "' is not a memory size (bytes, or a number with K, M, G or T)";
         return {};
       },
       "SIZE");
+  cmd->add_option("--memory-limit", value,
+                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
+                  "G, T); default: four fifths of what the cgroup or MemAvailable leaves")
+      ->check(size)
+      ->type_name("SIZE");
 }
 
 std::optional<MemoryLimit> memory_limit(const std::string& option) {

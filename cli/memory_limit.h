@@ -1,7 +1,8 @@
 #pragma once
 // The memory a verb may use (issue 17, row 6): --memory-limit SIZE, or by
-// default what the machine allows this process: the smaller of its cgroup's
-// limit (cgroup v2 memory.max, v1 memory.limit_in_bytes) and the kernel's
+// default four fifths of what the machine has left for this process: the
+// smaller of what its cgroup has left (v2 memory.max - memory.current, v1
+// memory.limit_in_bytes - memory.usage_in_bytes) and the kernel's
 // MemAvailable. A verb whose estimate (raster/memory_estimate.h) exceeds it
 // is refused before it starts, in one line, exit 2.
 #include <CLI/CLI.hpp>
@@ -13,7 +14,7 @@ namespace umbra::cli {
 
 struct MemoryLimit {
   std::uint64_t bytes = 0;
-  std::string source;  ///< "--memory-limit", "cgroup memory.max", "MemAvailable", ...
+  std::string source;  ///< "--memory-limit", "4/5 of MemAvailable", ...
 };
 
 /// The machine's limit for this process; nullopt when none can be read (no
@@ -25,8 +26,8 @@ std::optional<MemoryLimit> machine_memory_limit();
 /// Returns nullopt when the text is not such a size.
 std::optional<std::uint64_t> parse_memory_size(const std::string& text);
 
-/// A CLI11 check for SIZE.
-CLI::Validator memory_size();
+/// Adds `--memory-limit SIZE` to a verb, parsing into `value`.
+void add_memory_limit_option(CLI::App* cmd, std::string& value);
 
 /// The limit in force: `option` (the --memory-limit text, already checked)
 /// when given, else machine_memory_limit().

@@ -39,9 +39,13 @@ bool same_file(const fs::path& a, const fs::path& b) {
 
 }  // namespace
 
+std::string lowercase_extension(const fs::path& path) {
+  return lowercase(path.extension().string());
+}
+
 void check_output_path(const fs::path& path, std::initializer_list<std::string_view> extensions) {
   if (extensions.size() > 0) {
-    const std::string ext = lowercase(path.extension().string());
+    const std::string ext = lowercase_extension(path);
     if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) {
       std::string allowed;
       for (const auto e : extensions) allowed += (allowed.empty() ? "" : " or ") + std::string(e);

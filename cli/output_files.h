@@ -12,6 +12,9 @@
 
 namespace umbra::cli {
 
+/// The path's extension in lower case (".EXR" -> ".exr").
+std::string lowercase_extension(const std::filesystem::path& path);
+
 /// Throws geometry::InputError naming `path` when its extension is not one of
 /// `extensions` (compared case-insensitively, each with its dot: ".png"), or
 /// when its directory does not exist. An empty list accepts any extension.

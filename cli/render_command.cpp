@@ -12,7 +12,6 @@
 #include <raster/memory_estimate.h>
 #include <raster/render.h>
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -113,11 +112,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Write timings per phase and counts as JSON to FILE ('-' = stdout)")
       ->check(non_empty_path())
       ->type_name("FILE");
-  cmd->add_option("--memory-limit", args.memory_limit,
-                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
-                  "G, T); default: the cgroup limit or MemAvailable, the smaller")
-      ->check(memory_size())
-      ->type_name("SIZE");
+  add_memory_limit_option(cmd, args.memory_limit);
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
   cmd->add_option("--spp", args.spp,
                   "Beauty samples per pixel: 1, 9 or 25 (an odd grid; shadow.<i>, count.<i> and "
@@ -166,9 +161,7 @@ int run_render(const RenderArgs& args) {
   options.spp = args.spp;
   options.map = map_options(args);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
-  std::string extension = output.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const bool exr = extension == ".exr";
+  const bool exr = lowercase_extension(output) == ".exr";
   check_memory(raster::estimate_render_bytes(scene, options, exr), memory_limit(args.memory_limit),
                scene_path.string(),
                fmt::format("rendering {}x{} with {} (--method {})", scene.camera.width,

@@ -12,7 +12,6 @@
 #include <raster/validate.h>
 
 #include <array>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -89,11 +88,7 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
   cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
       ->check(thread_count())
       ->type_name("N");
-  cmd->add_option("--memory-limit", args.memory_limit,
-                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
-                  "G, T); default: the cgroup limit or MemAvailable, the smaller")
-      ->check(memory_size())
-      ->type_name("SIZE");
+  add_memory_limit_option(cmd, args.memory_limit);
   cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write the report and timings per phase as JSON to FILE ('-' = stdout)")
@@ -139,9 +134,7 @@ int run_validate(const ValidateArgs& args) {
   const raster::ShadowChannels channels = raster::read_shadow_channels(image);
   // It was read as the OpenEXR its content is; say so when its name
   // promised something else.
-  std::string extension = image.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".exr")
+  if (lowercase_extension(image) != ".exr")
     fmt::print(stderr, "umbra: warning: {}: is an OpenEXR file by its content; read as OpenEXR\n",
                image.string());
   const double seconds_read = lap();

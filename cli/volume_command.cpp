@@ -57,11 +57,7 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
                   "output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
-  cmd->add_option("--memory-limit", args.memory_limit,
-                  "Refuse to start when the estimated memory exceeds SIZE (bytes, or with K, M, "
-                  "G, T); default: the cgroup limit or MemAvailable, the smaller")
-      ->check(memory_size())
-      ->type_name("SIZE");
+  add_memory_limit_option(cmd, args.memory_limit);
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
