@@ -32,6 +32,10 @@ std::string lowercase(std::string s) {
   return s;
 }
 
+/// The last pixel coordinate of a window from `origin` of `size` pixels, in
+/// 64 bits: a hostile header's origin near INT_MAX would overflow int.
+long long last_pixel(int origin, int size) { return static_cast<long long>(origin) + size - 1; }
+
 /// The image format of `bytes` by their magic numbers, for messages; only
 /// "OpenEXR" is read back.
 const char* content_format(std::string_view bytes) {
@@ -260,11 +264,12 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   if (spec.x != 0 || spec.y != 0 || spec.full_x != 0 || spec.full_y != 0 ||
       spec.full_width != spec.width || spec.full_height != spec.height)
     throw InputError(
-        where, fmt::format("data window ({}, {}) to ({}, {}) is not the display window ({}, {}) "
-                           "to ({}, {}); umbra render writes them equal, from (0, 0)",
-                           spec.x, spec.y, spec.x + spec.width - 1, spec.y + spec.height - 1,
-                           spec.full_x, spec.full_y, spec.full_x + spec.full_width - 1,
-                           spec.full_y + spec.full_height - 1));
+        where,
+        fmt::format("data window ({}, {}) to ({}, {}) is not the display window ({}, {}) "
+                    "to ({}, {}); umbra render writes them equal, from (0, 0)",
+                    spec.x, spec.y, last_pixel(spec.x, spec.width), last_pixel(spec.y, spec.height),
+                    spec.full_x, spec.full_y, last_pixel(spec.full_x, spec.full_width),
+                    last_pixel(spec.full_y, spec.full_height)));
   const std::uint64_t n64 = static_cast<std::uint64_t>(spec.width) * spec.height;
   if (n64 > max_pixels)
     throw InputError(where, fmt::format("{}x{} pixels is more than the {} pixels a render can have",
@@ -276,33 +281,38 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   result.width = spec.width;
   result.height = spec.height;
   result.shadow.assign(by_light.size(), PixelPlane(n));
-  // The channels from the first shadow channel to the last, a block of rows
-  // at a time: the memory stays that of the planes, whatever other channels
-  // (or how many) the file holds.
-  const int first = std::min_element(by_light.begin(), by_light.end(), [](auto& a, auto& b) {
-                      return a.second < b.second;
-                    })->second;
-  const int last = std::max_element(by_light.begin(), by_light.end(), [](auto& a, auto& b) {
-                     return a.second < b.second;
-                   })->second;
+  // The shadow channels a block of rows at a time, so that other channels
+  // (or however many) cost no memory. EXR sorts channels by name, so in
+  // umbra's files they lie together and one read takes them all; a file
+  // that scatters them among others is read a channel at a time.
+  const auto by_channel = [](const auto& a, const auto& b) { return a.second < b.second; };
+  const int first = std::min_element(by_light.begin(), by_light.end(), by_channel)->second;
+  const int last = std::max_element(by_light.begin(), by_light.end(), by_channel)->second;
   const std::size_t span = static_cast<std::size_t>(last - first + 1);
-  constexpr int kBlockRows = 64;
-  std::vector<float> block(static_cast<std::size_t>(kBlockRows) * width * span);
-  for (int y0 = 0; y0 < spec.height; y0 += kBlockRows) {
-    const int y1 = std::min(spec.height, y0 + kBlockRows);
-    if (!in->read_scanlines(0, 0, y0, y1, 0, first, last + 1, OIIO::TypeDesc::FLOAT,
-                            block.data())) {
+  const bool together = span <= 2 * by_light.size();
+  const std::size_t channels_read = together ? span : 1;
+  constexpr std::size_t kBlockFloats = std::size_t{1} << 22;  // 16 MB
+  const int rows =
+      static_cast<int>(std::clamp<std::size_t>(kBlockFloats / (width * channels_read), 1, 64));
+  std::vector<float> block(static_cast<std::size_t>(rows) * width * channels_read);
+  const auto read = [&](int y0, int y1, int c0, int c1) {
+    if (!in->read_scanlines(0, 0, y0, y1, 0, c0, c1, OIIO::TypeDesc::FLOAT, block.data())) {
       std::string error = in->geterror();
       error = error.substr(0, error.find('\n'));
       throw InputError(where, "cannot read image: " + error);
     }
+  };
+  for (int y0 = 0; y0 < spec.height; y0 += rows) {
+    const int y1 = std::min(spec.height, y0 + rows);
     const std::size_t base = static_cast<std::size_t>(y0) * width;
     const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * width;
+    if (together) read(y0, y1, first, last + 1);
     std::size_t light = 0;
     for (const auto& [index, channel] : by_light) {
       PixelPlane& plane = result.shadow[light++];
-      const std::size_t c = static_cast<std::size_t>(channel - first);
-      for (std::size_t p = 0; p < pixels; ++p) plane[base + p] = block[p * span + c];
+      if (!together) read(y0, y1, channel, channel + 1);
+      const std::size_t c = together ? static_cast<std::size_t>(channel - first) : 0;
+      for (std::size_t p = 0; p < pixels; ++p) plane[base + p] = block[p * channels_read + c];
     }
   }
   return result;

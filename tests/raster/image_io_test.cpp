@@ -396,5 +396,29 @@ TEST_F(ImageIoTest, ManyLightsReadInBlocksOfRows) {
   for (std::size_t i = 0; i < 11; ++i) EXPECT_EQ(read.shadow[i], frame.shadow[i]) << i;
 }
 
+TEST_F(ImageIoTest, ShadowChannelsScatteredAmongOthersAreReadOneByOne) {
+  // EXR sorts channels by name: "shadow.0a" .. "shadow.0d" fall between
+  // shadow.0 and shadow.1, so the shadow channels are not together.
+  const fs::path path = dir_ / "scattered.exr";
+  const std::vector<std::string> names = {"shadow.0",  "shadow.0a", "shadow.0b",
+                                          "shadow.0c", "shadow.0d", "shadow.1"};
+  const int w = 5, h = 70;  // more rows than one block
+  OIIO::ImageSpec spec(w, h, static_cast<int>(names.size()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = names;
+  std::vector<float> pixels(static_cast<std::size_t>(w) * h * names.size());
+  for (std::size_t k = 0; k < pixels.size(); ++k) pixels[k] = static_cast<float>(k % 97);
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out && out->open(path.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+  ASSERT_TRUE(out->close());
+  out.reset();
+  const ShadowChannels read = read_shadow_channels(path);
+  ASSERT_EQ(read.shadow.size(), 2u);
+  for (std::size_t p = 0; p < static_cast<std::size_t>(w) * h; ++p) {
+    ASSERT_EQ(read.shadow[0][p], pixels[p * names.size() + 0]) << p;
+    ASSERT_EQ(read.shadow[1][p], pixels[p * names.size() + 5]) << p;
+  }
+}
+
 }  // namespace
 }  // namespace umbra::raster
