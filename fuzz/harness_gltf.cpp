@@ -2,10 +2,10 @@
 // .glb (binary container), chosen at build time by UMBRA_FUZZ_GLTF_EXT (a
 // GLB is recognised by its magic either way; the two corpora differ). Both
 // entry points must load or throw InputError: parse_gltf_scene (the scene
-// then holds what every loader promises, scene_checks.h) and
+// then holds what every loader promises, loader_promises.h) and
 // parse_gltf_polygon_soup (a JSON scene's "mesh": "x.glb").
 #include <fuzz/harness.h>
-#include <fuzz/scene_checks.h>
+#include <fuzz/loader_promises.h>
 #include <geometry/gltf_io.h>
 #include <geometry/input_error.h>
 
@@ -35,6 +35,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const geometry::InputError&) {
     return 0;
   }
-  fuzz::check_loaded_scene(kName, scene);
+  fuzz::check_loader_promises(kName, scene);
   return 0;
 }

@@ -1,9 +1,9 @@
 // Harness: geometry::parse_scene on arbitrary text. Must load or throw
 // InputError; a loaded scene must hold what the loader promises (valid
 // camera, indices in range, finite coordinates), and its shadow volumes, when
-// the scene is small, must form a closed weighted cycle (scene_checks.h).
+// the scene is small, must form a closed weighted cycle (loader_promises.h).
 #include <fuzz/harness.h>
-#include <fuzz/scene_checks.h>
+#include <fuzz/loader_promises.h>
 #include <geometry/input_error.h>
 #include <geometry/scene_io.h>
 
@@ -21,6 +21,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const geometry::InputError&) {
     return 0;
   }
-  fuzz::check_loaded_scene("scene_json", scene);
+  fuzz::check_loader_promises("scene_json", scene);
   return 0;
 }

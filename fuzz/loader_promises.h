@@ -8,6 +8,6 @@
 
 namespace umbra::fuzz {
 
-void check_loaded_scene(const char* harness, const geometry::Scene& scene);
+void check_loader_promises(const char* harness, const geometry::Scene& scene);
 
 }  // namespace umbra::fuzz

@@ -1,6 +1,6 @@
 #include <fuzz/closure_check.h>
 #include <fuzz/harness.h>
-#include <fuzz/scene_checks.h>
+#include <fuzz/loader_promises.h>
 #include <geometry/coordinate_range.h>
 #include <geometry/mesh_io.h>
 #include <geometry/volume_builder.h>
@@ -10,17 +10,17 @@
 
 namespace umbra::fuzz {
 
-void check_loaded_scene(const char* harness, const geometry::Scene& scene) {
+void check_loader_promises(const char* harness, const geometry::Scene& scene) {
   const auto& cam = scene.camera;
   UMBRA_FUZZ_CHECK(harness,
                    cam.width >= 1 && cam.width <= 16384 && cam.height >= 1 && cam.height <= 16384,
                    "camera size");
   UMBRA_FUZZ_CHECK(harness, cam.fov_y_deg > 0 && cam.fov_y_deg < 180, "fov");
   UMBRA_FUZZ_CHECK(harness, !(cam.eye == cam.look_at), "eye == look_at");
-  UMBRA_FUZZ_CHECK(harness,
-                   geometry::within_coordinate_range(cam.eye) &&
-                       geometry::within_coordinate_range(cam.look_at),
-                   "camera outside the exact range");
+  UMBRA_FUZZ_CHECK(
+      harness,
+      geometry::within_coordinate_range(cam.eye) && geometry::within_coordinate_range(cam.look_at),
+      "camera outside the exact range");
   UMBRA_FUZZ_CHECK(harness, !scene.models.empty(), "no model");
   std::size_t polygons = 0;
   double magnitude = 0;
