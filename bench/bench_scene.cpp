@@ -1,6 +1,6 @@
 #include "bench_scene.h"
 
-#include <geometry/mesh_io.h>
+#include <geometry/io/mesh_io.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 // scripts/chart.sh is the documented command (docs/methods.md).
 #include <fmt/format.h>
 #include <fuzz/scene_export.h>
-#include <geometry/atomic_files.h>
-#include <geometry/scene_io.h>
+#include <util/atomic_files.h>
+#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 
 #include <CLI/CLI.hpp>

@@ -13,7 +13,7 @@
 // scripts/bench_table.py from the JSON output.
 #include <benchmark/benchmark.h>
 #include <fuzz/scene_export.h>
-#include <geometry/atomic_files.h>
+#include <util/atomic_files.h>
 #include <raster/render.h>
 #include <raster/validate.h>
 

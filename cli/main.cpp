@@ -1,21 +1,22 @@
-// `umbra`: thin verbs over umbra::geometry and umbra::raster. This is the one
-// place where errors become messages and exit codes (docs/cli.md):
-// geometry::InputError -> "umbra: <what>" and 2; any other exception -> 3.
+// `umbra`: thin verbs over umbra::geometry and umbra::raster. Errors become
+// messages and exit codes in cli/verb_runner.h (docs/cli.md). `umbra fuzz`
+// runs the separate program umbra-fuzz beside this one, so that the
+// production executable carries no fuzzing code.
 #include <cli/exit_codes.h>
-#include <cli/fuzz_command.h>
 #include <cli/render_command.h>
 #include <cli/validate_command.h>
+#include <cli/verb_runner.h>
 #include <cli/volume_command.h>
 #include <fmt/format.h>
-#include <geometry/input_error.h>
-#include <geometry/temporary_files.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <csignal>
+#include <cerrno>
 #include <cstdio>
-#include <exception>
-#include <new>
+#include <cstring>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #ifndef UMBRA_VERSION
 #error "UMBRA_VERSION must be defined by the build (PROJECT_VERSION)"
@@ -38,31 +39,32 @@ constexpr const char* kFooter =
     "3 internal error. Errors are one line on stderr; no partial output file is\n"
     "left behind. Run 'umbra VERB --help' for the options of a verb.";
 
-/// The message of an error, on one line: whatever the library put in it, the
-/// contract promises one line on stderr.
-std::string one_line(std::string text) {
-  for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
-  return text;
-}
-
-/// Help and --version go to stdout with exit 0 (CLI11 prints them); every
-/// other parse error is a usage error: CLI11's message on one line, exit 2.
-int report_parse_error(const CLI::App& app, const CLI::ParseError& e) {
-  if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-  fmt::print(stderr, "umbra: {} (see 'umbra --help')\n", one_line(e.what()));
+/// `umbra fuzz ARGS...` is `umbra-fuzz ARGS...`, the program installed beside
+/// this one (the same build folder, or the same bin/). Returns only on error.
+int run_fuzz_program(int argc, char** argv) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path fuzz = self.parent_path() / "umbra-fuzz";
+  if (ec || !std::filesystem::is_regular_file(fuzz)) {
+    fmt::print(stderr,
+               "umbra: fuzz: the fuzzing tools are the program umbra-fuzz, not found beside "
+               "umbra at '{}'\n",
+               fuzz.string());
+    return kExitBadInput;
+  }
+  std::vector<char*> args{const_cast<char*>("umbra-fuzz")};
+  for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
+  args.push_back(nullptr);
+  ::execv(fuzz.c_str(), args.data());
+  fmt::print(stderr, "umbra: fuzz: cannot run '{}': {}\n", fuzz.string(), std::strerror(errno));
   return kExitBadInput;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Ctrl-C, kill or a closed terminal while a file is written: remove the
-  // hidden temporary, then end as the signal says.
-  umbra::geometry::remove_temporaries_on_signals();
-  // A file size limit (ulimit -f) would kill the process mid-write with
-  // SIGXFSZ; ignored, the write fails with EFBIG and is reported, exit 2.
-  std::signal(SIGXFSZ, SIG_IGN);
+  if (argc > 1 && std::string(argv[1]) == "fuzz") return run_fuzz_program(argc, argv);
+  install_signal_handlers();
   CLI::App app{"umbra: exact shadow volumes, rendered and proved right", "umbra"};
   app.set_version_flag("--version", std::string("umbra ") + UMBRA_VERSION,
                        "Print the version and exit");
@@ -72,17 +74,15 @@ int main(int argc, char** argv) {
   RenderArgs render_args;
   ValidateArgs validate_args;
   VolumeArgs volume_args;
-  FuzzArgs fuzz_args;
-  FuzzRealArgs fuzz_real_args;
   CLI::App* render = add_render_command(app, render_args);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
-  const FuzzCommands fuzz = add_fuzz_command(app, fuzz_args, fuzz_real_args);
+  // Listed in --help only: main() hands `fuzz` to umbra-fuzz before parsing.
+  app.add_subcommand("fuzz", "Degenerate scenes and real models: check, export, sweep (umbra-fuzz)");
 
   // CLI11 reports an unknown verb as "A subcommand is required"; name it.
   if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != render->get_name() &&
-      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name() &&
-      std::string(argv[1]) != "fuzz") {
+      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name()) {
     fmt::print(stderr,
                "umbra: unknown command '{}'; commands: {}, {}, {}, fuzz (see 'umbra --help')\n",
                argv[1], render->get_name(), validate->get_name(), volume->get_name());
@@ -92,33 +92,13 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return report_parse_error(app, e);
+    return report_parse_error(app, e, "umbra");
   }
-
-  try {
+  return run_verb([&] {
     if (render->parsed()) return run_render(render_args);
     if (validate->parsed()) return run_validate(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
-    if (fuzz.check->parsed()) return run_fuzz_check(fuzz_args);
-    if (fuzz.exp->parsed()) return run_fuzz_export(fuzz_args);
-    if (fuzz.real->parsed()) return run_fuzz_real(fuzz_real_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;
-  } catch (const umbra::geometry::InputError& e) {
-    fmt::print(stderr, "umbra: {}\n", one_line(e.what()));
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    // Out of memory wherever it happened (a worker thread's is rethrown
-    // here): a resource the machine lacks, not a bug.
-    fmt::print(stderr,
-               "umbra: out of memory: the input needs more than this machine allows (see "
-               "--memory-limit)\n");
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "umbra: internal error: {}\n", one_line(e.what()));
-    return kExitInternal;
-  } catch (...) {
-    fmt::print(stderr, "umbra: internal error: unknown exception\n");
-    return kExitInternal;
-  }
+  });
 }

@@ -1,6 +1,6 @@
 #include <cli/memory_limit.h>
 #include <fmt/format.h>
-#include <geometry/input_error.h>
+#include <util/input_error.h>
 
 #include <charconv>
 #include <cmath>

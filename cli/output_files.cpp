@@ -1,7 +1,7 @@
 #include <cli/output_files.h>
 #include <fmt/format.h>
-#include <geometry/atomic_files.h>
-#include <geometry/input_error.h>
+#include <util/atomic_files.h>
+#include <util/input_error.h>
 #include <sys/stat.h>
 
 #include <algorithm>

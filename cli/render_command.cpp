@@ -6,8 +6,8 @@
 #include <cli/render_command.h>
 #include <cli/stats_json.h>
 #include <fmt/format.h>
-#include <geometry/input_error.h>
-#include <geometry/scene_io.h>
+#include <util/input_error.h>
+#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/render.h>

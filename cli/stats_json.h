@@ -2,7 +2,7 @@
 // The JSON the verbs print or write: render and volume statistics
 // (--stats-json) and validation reports (--json). Field names are documented
 // in docs/cli.md.
-#include <geometry/shadow_volume.h>
+#include <geometry/volumes/shadow_volume.h>
 #include <raster/render.h>
 #include <raster/validate.h>
 

@@ -6,7 +6,7 @@
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
 #include <fmt/format.h>
-#include <geometry/scene_io.h>
+#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/validate.h>

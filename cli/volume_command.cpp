@@ -5,10 +5,10 @@
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
 #include <fmt/format.h>
-#include <geometry/input_error.h>
-#include <geometry/scene_io.h>
-#include <geometry/volume_builder.h>
-#include <geometry/volume_export.h>
+#include <util/input_error.h>
+#include <geometry/io/scene_json.h>
+#include <geometry/volumes/builder.h>
+#include <geometry/export/volume_export.h>
 #include <raster/memory_estimate.h>
 
 #include <chrono>

@@ -2,7 +2,7 @@
 #include <fuzz/edge_lights.h>
 #include <fuzz/splitmix64.h>
 #include <fuzz/usable_camera.h>
-#include <geometry/exact_predicates.h>
+#include <geometry/exact/predicates.h>
 
 #include <algorithm>
 #include <array>

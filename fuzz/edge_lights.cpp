@@ -1,5 +1,5 @@
 #include <fuzz/edge_lights.h>
-#include <geometry/exact_predicates.h>
+#include <geometry/exact/predicates.h>
 
 #include <vector>
 

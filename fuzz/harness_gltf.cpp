@@ -6,8 +6,8 @@
 // parse_gltf_polygon_soup (a JSON scene's "mesh": "x.glb").
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/gltf_io.h>
-#include <geometry/input_error.h>
+#include <geometry/io/gltf_scene.h>
+#include <util/input_error.h>
 
 #include <string_view>
 

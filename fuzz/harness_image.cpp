@@ -5,7 +5,7 @@
 // At most 2^20 pixels, so that a header's claimed size cannot make the
 // fuzzer's own memory limit the finding.
 #include <fuzz/harness.h>
-#include <geometry/input_error.h>
+#include <util/input_error.h>
 #include <raster/image_io.h>
 
 #include <string_view>

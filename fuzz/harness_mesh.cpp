@@ -2,11 +2,11 @@
 // by UMBRA_FUZZ_MESH_EXT ("off", "obj", "ply", "stl"). Must load or throw
 // InputError; a loaded soup holds finite vertices and polygons of >= 3
 // in-range indices; small soups get a shadow volume that must be closed.
-#include <fuzz/closure_check.h>
+#include <geometry/volumes/closure_check.h>
 #include <fuzz/harness.h>
-#include <geometry/input_error.h>
-#include <geometry/mesh_io.h>
-#include <geometry/volume_builder.h>
+#include <util/input_error.h>
+#include <geometry/io/mesh_io.h>
+#include <geometry/volumes/builder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   scene.lights.push_back(light);
   scene.camera.eye = {0, 0, 3 * magnitude + 3};
   const auto volumes = geometry::build_shadow_volumes(scene, {.caps = true, .threads = 1});
-  const fuzz::ClosureReport closure = fuzz::check_closure(volumes);
+  const geometry::ClosureReport closure = geometry::check_closure(volumes);
   UMBRA_FUZZ_CHECK(kName, closure.closed(), closure.summary());
   return 0;
 }

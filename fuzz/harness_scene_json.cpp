@@ -4,8 +4,8 @@
 // the scene is small, must form a closed weighted cycle (loader_promises.h).
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/input_error.h>
-#include <geometry/scene_io.h>
+#include <util/input_error.h>
+#include <geometry/io/scene_json.h>
 
 #include <string_view>
 

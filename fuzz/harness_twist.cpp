@@ -1,4 +1,4 @@
-// Harness: the twist test (geometry/twist.h) on decoded polygons of 3 to 8
+// Harness: the twist test (geometry/volumes/twist.h) on decoded polygons of 3 to 8
 // lattice vertices and a light placed anywhere, on a vertex, on an edge's
 // line, in the plane of three vertices, or at infinity (along an edge too).
 // Cross-checks that hold exactly:
@@ -16,8 +16,8 @@
 //   neither changes under exact rescaling.
 #include <fuzz/harness.h>
 #include <fuzz/byte_reader.h>
-#include <geometry/polygon_surface.h>
-#include <geometry/twist.h>
+#include <geometry/exact/polygon_surface.h>
+#include <geometry/volumes/twist.h>
 
 #include <array>
 #include <cmath>

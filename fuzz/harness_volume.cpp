@@ -2,11 +2,11 @@
 // lattice vertices at scales 1e-6 .. 1e6, any polygons, lights on vertices,
 // edge lines and face planes). The weighted boundary of every light's faces
 // must cancel edge by edge (closure_check.h), vertices must stay finite.
-#include <fuzz/closure_check.h>
+#include <geometry/volumes/closure_check.h>
 #include <fuzz/harness.h>
 #include <fuzz/scene_decoder.h>
 #include <fuzz/scene_export.h>
-#include <geometry/volume_builder.h>
+#include <geometry/volumes/builder.h>
 
 using namespace umbra;
 
@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.caps = true;
   options.threads = 1;  // libFuzzer runs many small inputs: no thread per light
   const auto volumes = geometry::build_shadow_volumes(scene, options);
-  const fuzz::ClosureReport closure = fuzz::check_closure(volumes);
+  const geometry::ClosureReport closure = geometry::check_closure(volumes);
   UMBRA_FUZZ_CHECK("volume", closure.closed(),
                    closure.summary() + "\nscene: " + fuzz::scene_to_json(scene));
   UMBRA_FUZZ_CHECK("volume", volumes.stats.size() == scene.lights.size(), "stats per light");

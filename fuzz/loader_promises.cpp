@@ -1,9 +1,9 @@
-#include <fuzz/closure_check.h>
+#include <geometry/volumes/closure_check.h>
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/coordinate_range.h>
-#include <geometry/mesh_io.h>
-#include <geometry/volume_builder.h>
+#include <geometry/exact/coordinate_range.h>
+#include <geometry/io/mesh_io.h>
+#include <geometry/volumes/builder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ void check_loader_promises(const char* harness, const geometry::Scene& scene) {
   // ones overflow by design of the extrusion, see docs/fuzzing.md).
   if (polygons <= 64 && scene.lights.size() <= 4 && magnitude <= 1e12) {
     const auto volumes = geometry::build_shadow_volumes(scene, {.caps = true, .threads = 1});
-    const ClosureReport closure = check_closure(volumes);
+    const geometry::ClosureReport closure = geometry::check_closure(volumes);
     UMBRA_FUZZ_CHECK(harness, closure.closed(), closure.summary());
   }
 }

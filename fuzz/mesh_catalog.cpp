@@ -1,5 +1,5 @@
 #include <fuzz/mesh_catalog.h>
-#include <geometry/input_error.h>
+#include <util/input_error.h>
 
 #include <algorithm>
 #include <cctype>

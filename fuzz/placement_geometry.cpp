@@ -1,6 +1,6 @@
 #include <fuzz/placement_geometry.h>
 #include <fuzz/splitmix64.h>
-#include <geometry/exact_predicates.h>
+#include <geometry/exact/predicates.h>
 
 #include <bit>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // The points the scene generators put lights at, built in doubles the way
-// user code builds them, and judged exactly (geometry/exact_predicates.h):
+// user code builds them, and judged exactly (geometry/exact/predicates.h):
 // a "midpoint" computed in doubles is usually a hair off its edge, and a
 // light there is exactly the case issue 16 found broken, so the generators
 // record which of the two each placement really is.

@@ -3,8 +3,8 @@
 #include <fuzz/real_scenes.h>
 #include <fuzz/splitmix64.h>
 #include <fuzz/usable_camera.h>
-#include <geometry/bvh.h>
-#include <geometry/exact_predicates.h>
+#include <geometry/oracle/bvh.h>
+#include <geometry/exact/predicates.h>
 
 #include <algorithm>
 #include <array>

@@ -4,8 +4,8 @@
 #include <fuzz/real_sweep.h>
 #include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
-#include <geometry/input_error.h>
-#include <geometry/mesh_io.h>
+#include <util/input_error.h>
+#include <geometry/io/mesh_io.h>
 
 #include <chrono>
 #include <fstream>

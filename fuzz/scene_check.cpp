@@ -1,6 +1,6 @@
-#include <fuzz/closure_check.h>
+#include <geometry/volumes/closure_check.h>
 #include <fuzz/scene_check.h>
-#include <geometry/volume_builder.h>
+#include <geometry/volumes/builder.h>
 #include <raster/validate.h>
 
 #include <chrono>
@@ -11,7 +11,7 @@ namespace umbra::fuzz {
 
 namespace {
 
-/// raster/volume_method.cpp says "... for light N"; the light is what a
+/// raster/methods/volume_method.cpp says "... for light N"; the light is what a
 /// report classifies the refusal by.
 int light_named_in(const std::string& message) {
   static const std::regex kLight("for light ([0-9]+)");
@@ -71,7 +71,7 @@ SceneCheck check_scene(const geometry::Scene& scene, const SceneCheckOptions& op
   try {
     if (options.closure) {
       const geometry::ShadowVolumes volumes = geometry::build_shadow_volumes(scene);
-      const ClosureReport closure = check_closure(volumes);
+      const geometry::ClosureReport closure = geometry::check_closure(volumes);
       result.closed = closure.closed();
       result.closure = closure.summary();
       result.shadow_polygons = volumes.polygons.size();

@@ -2,7 +2,7 @@
 // One scene checked as the fuzzing verbs check it: its closed volumes are
 // weighted cycles, and the volume method's render equals the exact oracle on
 // every pixel. A render that stops on an internal check (a negative depth
-// count means a broken volume: raster/volume_method.cpp refuses to draw it)
+// count means a broken volume: raster/methods/volume_method.cpp refuses to draw it)
 // is a refusal: caught and reported with its message, so that a sweep goes
 // on past it and counts it. Refusing beats a wrong picture, but it is a
 // failure all the same.
@@ -21,7 +21,7 @@ using RenderFunction = std::function<raster::Frame(
 
 struct SceneCheckOptions {
   unsigned threads = 1;
-  /// Also build the capped volumes and check they close (fuzz/closure_check.h);
+  /// Also build the capped volumes and check they close (geometry/volumes/closure_check.h);
   /// the sweep over large meshes leaves it to the tests.
   bool closure = true;
   /// The renderer; empty: raster::render. Tests put a failing one here.

@@ -1,11 +1,11 @@
 #include <fmt/format.h>
 #include <fuzz/scene_export.h>
-#include <geometry/input_error.h>
+#include <util/input_error.h>
 #include <geometry/sample_ray.h>
-#include <geometry/scene_index.h>
-#include <geometry/scene_io.h>
-#include <geometry/shadow_oracle.h>
-#include <geometry/visible_surface.h>
+#include <geometry/oracle/scene_index.h>
+#include <geometry/io/scene_json.h>
+#include <geometry/oracle/shadow_oracle.h>
+#include <geometry/exact/visible_surface.h>
 #include <raster/image_io.h>
 
 #include <bit>

@@ -8,7 +8,7 @@
 namespace umbra::fuzz {
 
 /// Sets camera.up to the first of (0,1,0), (1,0,0), (0,0,1) whose camera
-/// frame is finite and not degenerate (the loader's test, geometry/scene_io.cpp)
+/// frame is finite and not degenerate (the loader's test, geometry/io/scene_json.cpp)
 /// and returns true; false when none is, e.g. an eye within a few subnormals
 /// of look_at (a light nudged off the origin, the eye put behind it): the
 /// caller must move the eye.

@@ -1,5 +1,5 @@
 #include <raster/frame.h>
-#include <raster/parallel_rows.h>
+#include <util/parallel_rows.h>
 
 namespace umbra::raster {
 

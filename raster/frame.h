@@ -1,7 +1,7 @@
 #pragma once
 // What every render method produces: the beauty pass and the AOVs of
 // DESIGN.md, as plain buffers, row-major from the top-left pixel.
-#include <raster/huge_pages.h>
+#include <util/huge_pages.h>
 
 #include <cstddef>
 #include <limits>

@@ -1,9 +1,9 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
-#include <geometry/atomic_files.h>
-#include <geometry/input_error.h>
-#include <geometry/input_file.h>
+#include <util/atomic_files.h>
+#include <util/input_error.h>
+#include <util/input_file.h>
 #include <raster/image_io.h>
 #include <raster/shading.h>
 
@@ -75,7 +75,7 @@ void note_failure(bool ok, std::string& error, const std::string& what) {
 
 /// Encodes one image of `spec`, its pixels given by `write` (which returns
 /// false on failure), into memory in the format of `path`'s extension, then
-/// writes the bytes all or nothing (geometry/atomic_files.h: every write,
+/// writes the bytes all or nothing (util/atomic_files.h: every write,
 /// fsync and close checked). OpenImageIO's PNG writer does not report a
 /// failed fwrite (PLATFORM-NOTES.md): on a full disk it wrote a truncated
 /// file and said it succeeded, so no image goes to a file through it.

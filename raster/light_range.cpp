@@ -1,4 +1,4 @@
-#include <geometry/exact_predicates.h>
+#include <geometry/exact/predicates.h>
 #include <raster/light_range.h>
 
 namespace umbra::raster {

@@ -4,7 +4,7 @@
 // that renders from the scanline's visible surface.
 #include <geometry/sample_ray.h>
 #include <geometry/scene.h>
-#include <geometry/visible_surface.h>
+#include <geometry/exact/visible_surface.h>
 
 namespace umbra::raster {
 

@@ -6,8 +6,8 @@
 // every pair is one of the first two.
 #include <geometry/sample_ray.h>
 #include <geometry/scene.h>
-#include <geometry/visible_surface.h>
-#include <raster/scanline.h>
+#include <geometry/exact/visible_surface.h>
+#include <raster/scanline/scanline.h>
 
 #include <cstdint>
 #include <span>

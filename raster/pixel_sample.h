@@ -2,7 +2,7 @@
 // One decided sample, whichever method decided it, and how it lands in the
 // frame: the beauty pass shaded from its classes, and every AOV.
 #include <geometry/sample_ray.h>
-#include <geometry/shadow_oracle.h>
+#include <geometry/oracle/shadow_oracle.h>
 #include <raster/frame.h>
 #include <raster/shading.h>
 

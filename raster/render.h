@@ -2,7 +2,7 @@
 // One entry point for every render method.
 #include <geometry/scene.h>
 #include <raster/frame.h>
-#include <raster/progress.h>
+#include <util/progress.h>
 
 namespace umbra::raster {
 
@@ -57,7 +57,7 @@ struct RenderOptions {
   /// The AOVs stay the pixel centre's.
   int spp = 1;
   /// Told the phase and fraction done while rendering, from any thread, at
-  /// most ten times a second (raster/progress.h); empty: nobody listens.
+  /// most ten times a second (util/progress.h); empty: nobody listens.
   ProgressCallback progress{};
   ShadowMapOptions map{};  ///< Method::map only
   RayOptions ray{};        ///< Method::ray only

@@ -1,8 +1,8 @@
 // umbra validate: every checked pixel's shadow.<i> against the oracle.
-#include <geometry/input_error.h>
-#include <geometry/shadow_oracle.h>
+#include <util/input_error.h>
+#include <geometry/oracle/shadow_oracle.h>
 #include <raster/frame.h>
-#include <raster/parallel_rows.h>
+#include <util/parallel_rows.h>
 #include <raster/validate.h>
 
 #include <cmath>

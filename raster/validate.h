@@ -1,9 +1,9 @@
 #pragma once
 // Compares a render's shadow.<i> AOVs with the exact oracle.
 #include <geometry/scene.h>
-#include <geometry/shadow_oracle.h>
+#include <geometry/oracle/shadow_oracle.h>
 #include <raster/image_io.h>
-#include <raster/progress.h>
+#include <util/progress.h>
 
 #include <cstdint>
 #include <optional>

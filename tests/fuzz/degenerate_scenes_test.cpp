@@ -6,15 +6,15 @@
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/placement_geometry.h>
 #include <fuzz/scene_export.h>
-#include <geometry/exact_predicates.h>
-#include <geometry/scene_io.h>
+#include <geometry/exact/predicates.h>
+#include <geometry/io/scene_json.h>
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <map>
 
-#include "exact_reference.h"
+#include <tests/fuzz/exact_reference.h>
 
 namespace umbra::fuzz {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "exact_reference.h"
+#include <tests/fuzz/exact_reference.h>
 
 namespace umbra::fuzz {
 namespace {

@@ -6,16 +6,16 @@
 #include <fuzz/real_scenes.h>
 #include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
-#include <geometry/exact_predicates.h>
-#include <geometry/mesh_io.h>
-#include <geometry/scene_io.h>
+#include <geometry/exact/predicates.h>
+#include <geometry/io/mesh_io.h>
+#include <geometry/io/scene_json.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
-#include "exact_reference.h"
-#include "test_meshes.h"
+#include <tests/fuzz/exact_reference.h>
+#include <tests/fuzz/test_meshes.h>
 
 namespace umbra::fuzz {
 namespace {

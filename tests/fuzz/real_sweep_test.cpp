@@ -4,14 +4,14 @@
 // scene file the CLI can replay, and that the JSON says what the text says.
 #include <fuzz/real_sweep.h>
 #include <fuzz/sweep_report.h>
-#include <geometry/scene_io.h>
+#include <geometry/io/scene_json.h>
 #include <gtest/gtest.h>
 #include <raster/validate.h>
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "test_meshes.h"
+#include <tests/fuzz/test_meshes.h>
 
 namespace umbra::fuzz {
 namespace {

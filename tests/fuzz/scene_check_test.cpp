@@ -4,7 +4,7 @@
 // the light its message names. These are properties of the tool, true
 // before and after any fix to the volume code.
 #include <fuzz/scene_check.h>
-#include <geometry/scene_io.h>
+#include <geometry/io/scene_json.h>
 #include <gtest/gtest.h>
 #include <raster/validate.h>
 

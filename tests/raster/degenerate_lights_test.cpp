@@ -5,7 +5,7 @@
 // refused ("shadow volume count -1"). The scenes are literal: the lights
 // are the midpoints of edges as doubles compute them, which puts them a
 // hair off the edge in exact arithmetic, so every sample has one answer.
-#include <geometry/scene_io.h>
+#include <geometry/io/scene_json.h>
 #include <gtest/gtest.h>
 #include <raster/render.h>
 #include <raster/validate.h>

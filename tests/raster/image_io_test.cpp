@@ -1,5 +1,5 @@
 #include <OpenImageIO/imageio.h>
-#include <geometry/input_error.h>
+#include <util/input_error.h>
 #include <gtest/gtest.h>
 #include <raster/image_io.h>
 #include <raster/shading.h>
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "../file_size_limit.h"
+#include <tests/support/file_size_limit.h>
 
 namespace umbra::raster {
 namespace {

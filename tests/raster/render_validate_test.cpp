@@ -1,9 +1,9 @@
 // raster::render and raster::validate_render on scenes with known answers,
 // and the validator's ability to catch wrong pictures.
-#include <geometry/input_error.h>
+#include <util/input_error.h>
 #include <geometry/sample_ray.h>
-#include <geometry/scene_io.h>
-#include <geometry/shadow_oracle.h>
+#include <geometry/io/scene_json.h>
+#include <geometry/oracle/shadow_oracle.h>
 #include <gtest/gtest.h>
 #include <raster/render.h>
 #include <raster/validate.h>

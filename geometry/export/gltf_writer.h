@@ -1,0 +1,21 @@
+#pragma once
+// Internal to geometry/export/volume_export.cpp: the glTF layout of exported shadow
+// volumes (docs/volume-export.md, "glTF"). Include <geometry/export/volume_export.h>.
+#include <geometry/volumes/shadow_volume.h>
+
+#include <string>
+
+namespace umbra::geometry::detail {
+
+/// The bytes of a `.glb` (binary) or `.gltf` (buffer embedded as a base64
+/// data URI) file holding every face of `volumes`: one node, mesh and
+/// triangle primitive per light that has faces; each face fan-triangulated
+/// on its own vertices, which carry the face's attributes as float custom
+/// attributes (_FACE, _LIGHT, _MODEL, _POLYGON, _EDGE, _TYPE, _NB_C,
+/// _TWISTED). Throws InputError naming `name` when a coordinate does not
+/// fit a float or an attribute is not an exact float (|value| > 2^24).
+/// Preconditions (checked by the caller): every polygon has at least 3
+/// finite vertices.
+std::string gltf_volume_bytes(const ShadowVolumes& volumes, bool binary, const std::string& name);
+
+}  // namespace umbra::geometry::detail

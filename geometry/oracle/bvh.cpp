@@ -1,0 +1,109 @@
+#include <geometry/oracle/bvh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace umbra::geometry {
+
+void Box::extend(const Vec3& p) {
+  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+}
+void Box::extend(const Box& b) {
+  extend(b.lo);
+  extend(b.hi);
+}
+
+Bvh::Bvh(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
+  order_.resize(boxes_.size());
+  for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+  if (!boxes_.empty()) {
+    nodes_.reserve(2 * boxes_.size());
+    build(0, static_cast<std::uint32_t>(boxes_.size()));
+  }
+}
+
+std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.push_back({});
+  Box box, centres;
+  for (std::uint32_t i = begin; i < end; ++i) {
+    box.extend(boxes_[order_[i]]);
+    centres.extend(boxes_[order_[i]].centre());
+  }
+  nodes_[index].box = box;
+  constexpr std::uint32_t kLeafSize = 4;
+  if (end - begin <= kLeafSize) {
+    nodes_[index].first = begin;
+    nodes_[index].count = end - begin;
+    return index;
+  }
+  const Vec3 extent = centres.hi - centres.lo;
+  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+  const std::uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](std::uint32_t a, std::uint32_t b) {
+                     return boxes_[a].centre()[axis] < boxes_[b].centre()[axis];
+                   });
+  build(begin, mid);  // the left child is always index + 1
+  const std::uint32_t right = build(mid, end);
+  nodes_[index].first = right;
+  nodes_[index].count = 0;
+  return index;
+}
+
+namespace {
+
+/// Slab test of the segment from + s·(to - from), s in [0, 1] (or s >= 0 for a
+/// ray) against the box widened by `slack`. The widening must exceed the
+/// rounding error of this test, which is relative to the magnitudes involved:
+/// the caller's slack plus 1e-9 of the coordinates' size covers it with room.
+bool meets(const Box& box, const Vec3& from, const Vec3& dir, double s_max, double slack) {
+  double s0 = 0, s1 = s_max;
+  for (int a = 0; a < 3; ++a) {
+    const double scale = std::max({std::abs(box.lo[a]), std::abs(box.hi[a]), std::abs(from[a])});
+    const double pad = slack + 1e-9 * scale;
+    const double lo = box.lo[a] - pad, hi = box.hi[a] + pad;
+    const double o = from[a], d = dir[a];
+    if (d == 0) {
+      if (o < lo || o > hi) return false;
+      continue;
+    }
+    double ta = (lo - o) / d, tb = (hi - o) / d;
+    if (ta > tb) std::swap(ta, tb);
+    // Widen the parameter interval too: the divisions round.
+    const double widen = 1e-9 * (std::abs(ta) + std::abs(tb)) + 1e-300;
+    s0 = std::max(s0, ta - widen);
+    s1 = std::min(s1, tb + widen);
+    if (s0 > s1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Bvh::query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
+                        std::vector<std::uint32_t>& out) const {
+  if (nodes_.empty()) return;
+  const Vec3 dir = to_is_direction ? to : to - from;
+  const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!meets(node.box, from, dir, s_max, slack)) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        if (meets(boxes_[order_[i]], from, dir, s_max, slack)) out.push_back(order_[i]);
+      }
+    } else {
+      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
+      stack[top++] = self + 1;
+      stack[top++] = node.first;
+    }
+  }
+}
+
+}  // namespace umbra::geometry

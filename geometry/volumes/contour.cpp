@@ -1,0 +1,108 @@
+#include <geometry/volumes/contour.h>
+#include <geometry/exact/polygon_surface.h>
+#include <geometry/volumes/twist.h>
+
+namespace umbra::geometry {
+Sign polygon_facing(const Model& model, const Polygon& polygon, const HPoint& light) {
+  std::vector<Vec3> points;
+  points.reserve(polygon.size());
+  for (std::uint32_t v : polygon) points.push_back(model.vertices[v]);
+  return fan_orientation(points, light);
+}
+
+std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light) {
+  return polygon_roles(model, model_surfaces(model), light);
+}
+
+std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
+                                       const HPoint& light) {
+  std::vector<PolygonRole> roles(model.polygons.size());
+  std::vector<Vec3> points;
+  for (std::size_t p = 0; p < model.polygons.size(); ++p) {
+    const Polygon& polygon = model.polygons[p];
+    const PolygonSurface& surface = surfaces[p];
+    if (surface.shape == PolygonShape::degenerate) continue;
+    points.clear();
+    for (std::uint32_t v : polygon) points.push_back(model.vertices[v]);
+    if (surface.shape == PolygonShape::planar) {
+      // The light in the polygon's plane: no volume (DESIGN.md). Asked of a
+      // fan triangle of nonzero area, which spans the plane.
+      const auto& t = surface.triangles.front().local;
+      const Sign side = orientation(points[t[0]], HPoint::point(points[t[1]]),
+                                    HPoint::point(points[t[2]]), light);
+      if (side == Sign::zero) continue;
+      // A triangle's fan is that triangle, (0, 1, 2): its facing is this
+      // very sign, fan_orientation's own call. Meshes are mostly triangles,
+      // and every light asks each one.
+      if (points.size() == 3) {
+        roles[p].facing = to_int(side);
+        continue;
+      }
+    }
+    if (points.size() >= 4 && l_twisted(points, light)) {
+      roles[p] = {1, true};
+    } else if (surface.shape == PolygonShape::planar) {
+      roles[p].facing = to_int(fan_orientation(points, light));
+    } else {
+      const Sign facing = projected_facing(points, light);
+      if (folds_seen_from(points, light, facing)) {
+        roles[p] = {1, true};  // folded or wrapped: parity, like a twisted polygon
+      } else {
+        roles[p].facing = to_int(facing);
+      }
+    }
+  }
+  return roles;
+}
+
+std::vector<ContourEdge> contour_edges(const Model& model, const HPoint& light) {
+  return contour_edges(model, polygon_roles(model, light));
+}
+
+std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles) {
+  return contour_edges(edge_table(model), roles);
+}
+
+std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
+                                       const std::vector<PolygonRole>& roles) {
+  std::vector<ContourEdge> result;
+  for (std::size_t e = 0; e < edges.edges.size(); ++e) {
+    int weight = 0;  // along the edge as first listed
+    for (std::uint32_t u = edges.use_begin[e]; u < edges.use_begin[e + 1]; ++u) {
+      const EdgeTable::Use& use = edges.uses[u];
+      const PolygonRole& role = roles[use.polygon];
+      if (!role.twisted) weight -= role.facing * use.along;
+    }
+    if (weight == 0) continue;
+    const EdgeTable::Edge& first = edges.edges[e];
+    // Directed so that the weight is positive.
+    if (weight > 0)
+      result.push_back({first.from, first.to, weight, first.polygon, first.edge});
+    else
+      result.push_back({first.to, first.from, -weight, first.polygon, first.edge});
+  }
+  return result;
+}
+
+EdgeTopology edge_topology(const Model& model) {
+  return edge_topology(edge_table(model), model_surfaces(model));
+}
+
+EdgeTopology edge_topology(const EdgeTable& edges, std::span<const PolygonSurface> surfaces) {
+  EdgeTopology t;
+  t.edges = edges.edges.size();
+  for (std::size_t e = 0; e < edges.edges.size(); ++e) {
+    const std::uint32_t n = edges.use_begin[e + 1] - edges.use_begin[e];
+    if (n == 1)
+      ++t.boundary_edges;
+    else if (n == 2)
+      ++t.manifold_edges;
+    else
+      ++t.non_manifold_edges;
+  }
+  for (const PolygonSurface& s : surfaces)
+    if (s.shape == PolygonShape::degenerate) ++t.degenerate_polygons;
+  return t;
+}
+
+}  // namespace umbra::geometry

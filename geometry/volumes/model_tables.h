@@ -1,0 +1,26 @@
+#pragma once
+// What depends on a model alone, whatever the light: its polygons' surfaces
+// and its edge table. A render reports every model's edge topology from them
+// and builds every light's volume from them: made once and shared, where
+// each used to make its own (twice the hashing of every vertex and edge on
+// a shadowed frame).
+#include <geometry/volumes/model_edges.h>
+#include <geometry/exact/polygon_surface.h>
+#include <geometry/scene.h>
+
+#include <vector>
+
+namespace umbra::geometry {
+
+struct ModelTables {
+  std::vector<PolygonSurface> surfaces;  ///< model_surfaces(model)
+  EdgeTable edges;                       ///< edge_table(model)
+};
+
+/// Per model of the scene, in model order, on up to `threads` threads (0:
+/// every hardware thread); a model's two tables are made on two threads.
+/// With `casting_only`, models that cast no shadow get empty tables.
+std::vector<ModelTables> model_tables(const Scene& scene, unsigned threads,
+                                      bool casting_only = false);
+
+}  // namespace umbra::geometry

@@ -1,0 +1,48 @@
+// Method::exact: the ground truth, one oracle query per pixel and light.
+#include <geometry/oracle/shadow_oracle.h>
+#include <util/parallel_rows.h>
+#include <raster/pixel_sample.h>
+#include <raster/methods/render_methods.h>
+#include <raster/scanline/surface_table.h>
+
+#include <chrono>
+
+namespace umbra::raster {
+
+Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& options,
+                   RenderStats& stats) {
+  const geometry::Scene& scene = index.scene();
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const std::size_t lights = scene.lights.size();
+  Frame frame(camera.width, camera.height, lights, options.threads);
+  const auto start = std::chrono::steady_clock::now();
+  Progress progress(options.progress);
+  progress.phase("exact", static_cast<std::uint64_t>(camera.height));
+
+  parallel_rows(camera.height, options.threads, [&](int j) {
+    PixelSample sample(lights);
+    for (int i = 0; i < camera.width; ++i) {
+      const std::size_t pixel = frame.pixel(i, j);
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+      const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
+      if (!hit) {
+        store_background(pixel, frame);
+        continue;
+      }
+      set_surface(index, ray, *hit, sample);
+      for (std::uint32_t l = 0; l < lights; ++l) {
+        sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;
+        sample.counts[l] = sample.classes[l] == geometry::ShadowClass::shadowed ? 1 : 0;
+      }
+      store_sample(scene, ray, sample, pixel, frame);
+    }
+    progress.advance();
+  });
+
+  stats.seconds_decide =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.exact_fallback_pixels = static_cast<std::uint64_t>(camera.width) * camera.height;
+  return frame;
+}
+
+}  // namespace umbra::raster

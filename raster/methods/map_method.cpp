@@ -1,0 +1,265 @@
+// Method::map: Williams' shadow maps (1978). The visible surface is the
+// volume method's (scanline, exact first hit wherever the scanline is
+// unsure), so every error of this method is in the shadow decision alone:
+//   1. visible pass: per pixel the visible sample, then per light what needs
+//      no map (out of range, exact; the attached shadow of a surface turned
+//      away from the light, exact) and, for the rest, which view it reads;
+//   2. depth views: only those some sample reads (shadow_map.h);
+//   3. decide pass: each remaining (sample, light) looked up (shadow_lookup.h).
+#include <geometry/exact/predicates.h>
+#include <raster/light_range.h>
+#include <raster/light_reach.h>
+#include <util/parallel_rows.h>
+#include <util/phase_clock.h>
+#include <raster/pixel_sample.h>
+#include <raster/methods/render_methods.h>
+#include <raster/scanline/scanline.h>
+#include <raster/methods/shadow_lookup.h>
+#include <raster/methods/shadow_map.h>
+#include <raster/scanline/surface_table.h>
+
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace umbra::raster {
+
+using geometry::ShadowClass;
+using geometry::Vec3;
+
+namespace {
+
+/// What the visible pass leaves for a (pixel, light): a class already
+/// decided, or the view to read.
+enum class Decided : std::uint8_t { lit, shadowed, out_of_range, lookup };
+
+struct VisibleSample {
+  bool hit = false;
+  double t = 0;
+  Vec3 normal;
+  std::uint32_t polygon = 0;  ///< index in SceneIndex::polygons(), for the look
+};
+
+void check_options(const ShadowMapOptions& o) {
+  if (o.resolution < 1 || o.resolution > 65536)
+    throw std::invalid_argument("render: map resolution must be in [1, 65536], got " +
+                                std::to_string(o.resolution));
+  if (o.pcf != 1 && o.pcf != 3 && o.pcf != 5)
+    throw std::invalid_argument("render: map pcf must be 1, 3 or 5, got " + std::to_string(o.pcf));
+  if (!std::isfinite(o.constant_bias) || !std::isfinite(o.slope_bias) || o.constant_bias < 0 ||
+      o.slope_bias < 0)
+    throw std::invalid_argument("render: map biases must be finite and >= 0");
+}
+
+/// Bergeron's attached shadow: the light strictly on the other side of the
+/// visible triangle's plane than the eye (whose side the sample point is
+/// on). Exact, so that a depth bias never lights the back of an open
+/// surface; a real-time renderer gets the same from n·l <= 0.
+bool faces_away(const geometry::Light& light, const Vec3& eye, const geometry::HitTriangle& tri) {
+  using geometry::HPoint;
+  const geometry::Sign at_light =
+      light.type == geometry::LightType::point
+          ? geometry::orientation(tri.a, tri.b, tri.c, light.position)
+          : geometry::orientation(tri.a, HPoint::point(tri.b), HPoint::point(tri.c),
+                                  HPoint::at_infinity(-light.direction));
+  const geometry::Sign at_eye = geometry::orientation(tri.a, tri.b, tri.c, eye);
+  return at_light != geometry::Sign::zero && at_light == -at_eye;
+}
+
+/// The scene's shadow-casting surfaces as occluders: planar polygons whole
+/// (filled even-odd), non-planar ones as their fan triangles.
+std::vector<Occluder> occluders_of(const geometry::SceneIndex& index, const SurfaceTable& table) {
+  std::vector<Occluder> out;
+  for (std::size_t k = 0; k < table.entries.size(); ++k)
+    if (index.polygons()[table.entries[k].hit.polygon].casts_shadows)
+      out.push_back({table.polygons[k].vertices});
+  return out;
+}
+
+geometry::Box scene_bounds(const geometry::Scene& scene) {
+  geometry::Box box;
+  for (const geometry::Model& m : scene.models)
+    for (const Vec3& v : m.vertices) box.extend(v);
+  return box;
+}
+
+/// Filter taps, bilinear neighbours and dither reach at most this far past
+/// the texel a sample falls in.
+int view_margin(const ShadowMapOptions& o) { return o.pcf / 2 + 2; }
+
+}  // namespace
+
+Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options,
+                 RenderStats& stats) {
+  const ShadowMapOptions& mo = options.map;
+  check_options(mo);
+  const geometry::Scene& scene = index.scene();
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const std::size_t lights = scene.lights.size();
+  const std::size_t pixels = static_cast<std::size_t>(camera.width) * camera.height;
+  Progress progress(options.progress);
+
+  // 1. The visible surface, as Method::volume finds it.
+  auto start = Clock::now();
+  const SurfaceTable table = surface_table(index);
+  const ReachTable reach(table.polygons, scene.lights);
+  progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
+  const ScanlineResult scan =
+      scanline_render(camera, table.polygons, 0, options.threads, {}, &progress);
+  stats.surface_polygons = table.entries.size();
+  stats.spans = scan.spans;
+  stats.seconds_raster_prepare = scan.seconds_prepare;
+
+  std::vector<VisibleSample> visible(pixels);
+  std::vector<Decided> decided(pixels * lights, Decided::lit);
+  std::vector<std::uint8_t> face(pixels * lights, 0);
+  // Per light, a bit per cube face (bit 0 for a directional light's view)
+  // that some sample reads; OR-ed from every thread, so order-free.
+  std::vector<std::atomic<std::uint32_t>> needed(lights);
+  std::atomic<std::uint64_t> fallbacks{0};
+  Frame frame(camera.width, camera.height, lights, options.threads);
+  progress.phase("visible", static_cast<std::uint64_t>(camera.height));
+  parallel_rows(camera.height, options.threads, [&](int j) {
+    std::vector<std::uint32_t> row_needed(lights, 0);
+    std::uint64_t row_fallbacks = 0;
+    for (int i = 0; i < camera.width; ++i) {
+      const std::size_t pixel = frame.pixel(i, j);
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+      VisibleSample& s = visible[pixel];
+      geometry::SurfaceHit hit;
+      std::optional<std::uint32_t> entry_id;  ///< the scanline's entry, where it decided
+      if (!(scan.uncertain[pixel] & kSurfaceUncertain)) {
+        if (scan.visible[pixel] < 0) continue;
+        entry_id = static_cast<std::uint32_t>(scan.visible[pixel]);
+        const SurfaceEntry& entry = table.entries[*entry_id];
+        hit = entry.hit;
+        s.t = scan.depth[pixel];
+        s.normal = entry.normal;
+      } else {
+        ++row_fallbacks;
+        const std::optional<geometry::SurfaceHit> exact = geometry::first_hit(index, ray);
+        if (!exact) continue;
+        hit = *exact;
+        PixelSample surface;
+        set_surface(index, ray, hit, surface);
+        s.t = surface.t;
+        s.normal = surface.normal;
+      }
+      s.hit = true;
+      s.polygon = hit.polygon;
+      const geometry::HitTriangle tri = geometry::hit_triangle(index, hit);
+      const bool casts = index.polygons()[hit.polygon].casts_shadows;
+      const Vec3 point = ray.origin + s.t * ray.direction;
+      for (std::uint32_t l = 0; l < lights; ++l) {
+        const geometry::Light& light = scene.lights[l];
+        Decided& d = decided[pixel * lights + l];
+        if (entry_id ? reach.out_of_range(*entry_id, l, light, ray, tri)
+                     : out_of_range(light, ray, tri)) {
+          d = Decided::out_of_range;
+        } else if (casts && faces_away(light, ray.origin, tri)) {
+          d = Decided::shadowed;
+        } else {
+          d = Decided::lookup;
+          const int f =
+              light.type == geometry::LightType::point ? cube_face(point - light.position) : 0;
+          face[pixel * lights + l] = static_cast<std::uint8_t>(f);
+          row_needed[l] |= 1u << f;
+        }
+      }
+    }
+    for (std::size_t l = 0; l < lights; ++l) needed[l] |= row_needed[l];
+    fallbacks += row_fallbacks;
+    progress.advance();
+  });
+  stats.exact_fallback_pixels = fallbacks;
+  stats.seconds_raster = seconds_since(start);
+
+  // 2. The depth views some sample reads; the others cost nothing.
+  start = Clock::now();
+  const std::vector<Occluder> occluders = occluders_of(index, table);
+  const geometry::Box bounds = scene_bounds(scene);
+  const double near = 1e-7 * std::max(index.magnitude(), 1e-300);
+  std::vector<std::vector<MapView>> views(lights);
+  std::vector<std::vector<DepthMap>> maps(lights);
+  std::uint64_t views_to_build = 0;
+  for (std::size_t l = 0; l < lights; ++l) views_to_build += std::popcount(needed[l].load());
+  progress.phase("shadow maps", views_to_build);
+  for (std::size_t l = 0; l < lights; ++l) {
+    const geometry::Light& light = scene.lights[l];
+    if (light.type == geometry::LightType::point) {
+      const auto cube = cube_views(light.position, mo.resolution, view_margin(mo), near);
+      views[l].assign(cube.begin(), cube.end());
+    } else {
+      views[l] = {directional_view(light.direction, bounds, mo.resolution, view_margin(mo))};
+    }
+    maps[l].resize(views[l].size());
+    for (std::size_t f = 0; f < views[l].size(); ++f) {
+      if (!(needed[l].load() >> f & 1u)) continue;
+      maps[l][f] = rasterize_depth(views[l][f], occluders, options.threads);
+      ++stats.map_views;
+      stats.map_texels += maps[l][f].depth.size();
+      progress.advance();
+    }
+  }
+  stats.seconds_maps = seconds_since(start);
+
+  // 3. Each sample against the views it reads.
+  start = Clock::now();
+  std::atomic<std::uint64_t> lookups{0};
+  progress.phase("shading", static_cast<std::uint64_t>(camera.height));
+  parallel_rows(camera.height, options.threads, [&](int j) {
+    PixelSample sample(lights);
+    std::uint64_t row_lookups = 0;
+    for (int i = 0; i < camera.width; ++i) {
+      const std::size_t pixel = frame.pixel(i, j);
+      const VisibleSample& s = visible[pixel];
+      if (!s.hit) {
+        store_background(pixel, frame);
+        continue;
+      }
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+      const geometry::IndexedPolygon& polygon = index.polygons()[s.polygon];
+      const geometry::Model& model = scene.models[polygon.model];
+      sample.t = s.t;
+      sample.normal = s.normal;
+      sample.look = {model.color, model.specular, model.shininess};
+      const Receiver receiver{ray.origin + s.t * ray.direction, s.normal};
+      for (std::uint32_t l = 0; l < lights; ++l) {
+        ShadowClass& c = sample.classes[l];
+        switch (decided[pixel * lights + l]) {
+          case Decided::lit:
+            c = ShadowClass::lit;
+            break;
+          case Decided::shadowed:
+            c = ShadowClass::shadowed;
+            break;
+          case Decided::out_of_range:
+            c = ShadowClass::out_of_range;
+            break;
+          case Decided::lookup: {
+            const int f = face[pixel * lights + l];
+            const Offset offset = mo.dither ? dither_offset(dither_key(i, j, l)) : Offset{};
+            const double lit = lit_fraction(views[l][f], maps[l][f], receiver, mo, offset);
+            // The hard class: lit when at least half the filter sees the light.
+            c = lit >= 0.5 ? ShadowClass::lit : ShadowClass::shadowed;
+            ++row_lookups;
+            break;
+          }
+        }
+        sample.counts[l] = c == ShadowClass::shadowed ? 1 : 0;
+      }
+      store_sample(scene, ray, sample, pixel, frame);
+    }
+    lookups += row_lookups;
+    progress.advance();
+  });
+  stats.map_lookups = lookups;
+  stats.seconds_decide = seconds_since(start);
+  return frame;
+}
+
+}  // namespace umbra::raster

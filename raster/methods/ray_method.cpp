@@ -1,0 +1,223 @@
+// Method::ray: ray-cast shadows with Embree in single precision, the fast
+// baseline a user would write (docs/ray-cast.md). Per row of pixels: one
+// stream of primary rays along DESIGN.md's sample rays (rounded to float),
+// then one stream of occlusion rays from the visible points to every light
+// that can reach them. Nothing is decided exactly: every float mistake
+// (acne, leaks, misses at shared edges) is the method's error, which the
+// validator counts.
+#include <raster/methods/embree_scene.h>
+#include <util/parallel_rows.h>
+#include <util/phase_clock.h>
+#include <raster/pixel_sample.h>
+#include <raster/methods/render_methods.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <limits>
+#include <vector>
+
+namespace umbra::raster {
+
+using geometry::ShadowClass;
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+glm::vec3 to_float(const geometry::Vec3& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
+
+/// A light in float, as the shadow rays see it.
+struct FloatLight {
+  bool directional = false;
+  glm::vec3 position{0.0f};  ///< point lights
+  glm::vec3 toward{0.0f};    ///< directional: unit vector against the light's direction
+  double light_end = std::numeric_limits<double>::infinity();
+};
+
+std::vector<FloatLight> float_lights(const geometry::Scene& scene) {
+  std::vector<FloatLight> out;
+  for (const geometry::Light& l : scene.lights) {
+    FloatLight f;
+    f.directional = l.type == geometry::LightType::directional;
+    f.position = to_float(l.position);
+    if (f.directional) f.toward = -glm::normalize(to_float(l.direction));
+    if (l.type == geometry::LightType::point && l.light_end) f.light_end = *l.light_end;
+    out.push_back(f);
+  }
+  return out;
+}
+
+/// What a visible sample needs from one light before any occlusion ray.
+enum class Reach {
+  out_of_range,  ///< |H - L| > light_end (in float): no ray
+  attached,      ///< the light is behind the hit surface as seen from the eye: no ray
+  trace,         ///< an occlusion ray decides
+};
+
+/// The occlusion ray toward `light` from the float hit point `h` on a
+/// surface with geometric normal `ng`, or why none is needed. The ray
+/// starts `offset` along its own (unit) direction: Embree's tnear, the
+/// usual self-intersection epsilon; it ends `offset` before a point light.
+Reach shadow_ray(const FloatLight& light, const glm::vec3& h, const glm::vec3& ng,
+                 const glm::vec3& to_eye, bool casts, float offset, RTCRay& ray) {
+  glm::vec3 dir = light.toward;
+  float far = kInfinity;
+  if (!light.directional) {
+    const glm::vec3 to_light = light.position - h;
+    const float distance = glm::length(to_light);
+    if (static_cast<double>(distance) > light.light_end) return Reach::out_of_range;
+    // A light on the hit point reaches it: nothing lies between.
+    dir = distance > 0 ? to_light / distance : ng;
+    far = distance - offset;
+  }
+  // The facing test every ray tracer makes before tracing (N·L against
+  // N·V, both in float with Embree's geometric normal): a caster shadows
+  // its own samples when the light is on its far side. A model that casts
+  // no shadows does not, and its own triangle is not in casters().
+  const float nl = glm::dot(ng, dir), ne = glm::dot(ng, to_eye);
+  if (casts && ((nl < 0 && ne > 0) || (nl > 0 && ne < 0))) return Reach::attached;
+  ray.org_x = h.x;
+  ray.org_y = h.y;
+  ray.org_z = h.z;
+  ray.dir_x = dir.x;
+  ray.dir_y = dir.y;
+  ray.dir_z = dir.z;
+  ray.tnear = offset;
+  ray.tfar = far;
+  ray.time = 0;
+  ray.mask = ~0u;
+  ray.id = 0;
+  ray.flags = 0;
+  return Reach::trace;
+}
+
+/// One row's primary rays: DESIGN.md's sample rays rounded to float.
+void primary_rays(const geometry::CameraFrame& camera, int j, std::vector<RTCRayHit>& rays) {
+  for (int i = 0; i < camera.width; ++i) {
+    const geometry::SampleRay s = geometry::sample_ray(camera, i, j);
+    RTCRayHit& r = rays[static_cast<std::size_t>(i)];
+    r.ray.org_x = static_cast<float>(s.origin.x);
+    r.ray.org_y = static_cast<float>(s.origin.y);
+    r.ray.org_z = static_cast<float>(s.origin.z);
+    r.ray.dir_x = static_cast<float>(s.direction.x);
+    r.ray.dir_y = static_cast<float>(s.direction.y);
+    r.ray.dir_z = static_cast<float>(s.direction.z);
+    r.ray.tnear = 0;
+    r.ray.tfar = kInfinity;
+    r.ray.time = 0;
+    r.ray.mask = ~0u;
+    r.ray.id = static_cast<unsigned>(i);
+    r.ray.flags = 0;
+    r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  }
+}
+
+}  // namespace
+
+Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options,
+                 RenderStats& stats) {
+  const geometry::Scene& scene = index.scene();
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const std::size_t lights = scene.lights.size();
+  Progress progress(options.progress);
+
+  progress.phase("bvh", 1);
+  auto start = Clock::now();
+  const EmbreeScene rt(index, options.threads);
+  stats.seconds_bvh = seconds_since(start);
+
+  // As in the other methods, "decide" includes allocating the frame.
+  start = Clock::now();
+  Frame frame(camera.width, camera.height, lights, options.threads);
+  const std::vector<FloatLight> float_light = float_lights(scene);
+  const float offset = static_cast<float>(options.ray.epsilon * rt.diagonal());
+  stats.ray_offset = offset;
+  const auto width = static_cast<std::size_t>(camera.width);
+  std::atomic<std::uint64_t> shadow_rays{0};
+  progress.phase("rays", static_cast<std::uint64_t>(camera.height));
+  parallel_rows(camera.height, options.threads, [&](int j) {
+    // Primary rays of a row are coherent; Embree's stream API packs them.
+    std::vector<RTCRayHit> primary(width);
+    primary_rays(camera, j, primary);
+    RTCIntersectContext coherent;
+    rtcInitIntersectContext(&coherent);
+    coherent.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect1M(rt.visible(), &coherent, primary.data(), camera.width, sizeof(RTCRayHit));
+
+    // Classes known without a ray; occlusion rays for the rest, one stream.
+    std::vector<ShadowClass> classes(width * lights, ShadowClass::lit);
+    std::vector<RTCRay> occlusion;
+    std::vector<std::size_t> slot;  // classes[] index of each occlusion ray
+    occlusion.reserve(width * lights);
+    slot.reserve(width * lights);
+    for (std::size_t i = 0; i < width; ++i) {
+      const RTCRayHit& p = primary[i];
+      if (p.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+      const glm::vec3 org{p.ray.org_x, p.ray.org_y, p.ray.org_z};
+      const glm::vec3 dir{p.ray.dir_x, p.ray.dir_y, p.ray.dir_z};
+      const glm::vec3 h = org + p.ray.tfar * dir;  // the float hit point
+      const glm::vec3 ng{p.hit.Ng_x, p.hit.Ng_y, p.hit.Ng_z};
+      for (std::size_t l = 0; l < lights; ++l) {
+        RTCRay ray;
+        switch (shadow_ray(float_light[l], h, ng, -dir, rt.casts(p.hit.primID), offset, ray)) {
+          case Reach::out_of_range:
+            classes[i * lights + l] = ShadowClass::out_of_range;
+            break;
+          case Reach::attached:
+            classes[i * lights + l] = ShadowClass::shadowed;
+            break;
+          case Reach::trace:
+            // A point light nearer than twice the offset: nothing fits between.
+            if (ray.tfar > ray.tnear) {
+              occlusion.push_back(ray);
+              slot.push_back(i * lights + l);
+            }
+            break;
+        }
+      }
+    }
+    RTCIntersectContext incoherent;
+    rtcInitIntersectContext(&incoherent);
+    if (!occlusion.empty())
+      rtcOccluded1M(rt.casters(), &incoherent, occlusion.data(),
+                    static_cast<unsigned>(occlusion.size()), sizeof(RTCRay));
+    for (std::size_t k = 0; k < occlusion.size(); ++k)
+      if (occlusion[k].tfar == -kInfinity) classes[slot[k]] = ShadowClass::shadowed;
+    shadow_rays += occlusion.size();
+
+    PixelSample sample(lights);
+    for (std::size_t i = 0; i < width; ++i) {
+      const std::size_t pixel = frame.pixel(static_cast<int>(i), j);
+      const RTCRayHit& p = primary[i];
+      if (p.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+        store_background(pixel, frame);
+        continue;
+      }
+      const SurfaceEntry& entry = rt.entry(p.hit.primID);
+      // Embree's t along the float direction, taken as the parameter of
+      // the double sample ray: depth and shading see the float hit.
+      sample.t = p.ray.tfar;
+      sample.normal = entry.normal;
+      sample.look = entry.look;
+      for (std::size_t l = 0; l < lights; ++l) {
+        sample.classes[l] = classes[i * lights + l];
+        sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+      }
+      store_sample(scene, geometry::sample_ray(camera, static_cast<int>(i), j), sample, pixel,
+                   frame);
+    }
+    progress.advance();
+  });
+  stats.primary_rays = static_cast<std::uint64_t>(camera.width) * camera.height;
+  stats.shadow_rays = shadow_rays;
+  stats.seconds_decide = seconds_since(start);
+  return frame;
+}
+
+}  // namespace umbra::raster

@@ -1,0 +1,38 @@
+#pragma once
+// The render methods behind raster::render (render.h), one file each.
+#include <geometry/volumes/model_tables.h>
+#include <geometry/oracle/scene_index.h>
+#include <raster/frame.h>
+#include <raster/render.h>
+
+#include <span>
+
+namespace umbra::raster {
+
+/// The oracle's own answer at every pixel: exact first hit, exact class.
+/// count.<i> is 1 where shadowed, 0 elsewhere.
+Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& options,
+                   RenderStats& stats);
+
+/// Shadow volumes from contour edges through the scanline depth count, with
+/// every pixel the scanline cannot decide in floating point decided again
+/// exactly (visible_surface.h, geometry/volumes/crossings.h, and the oracle where even
+/// the exact volume count meets a degenerate configuration). `tables` are
+/// the scene's models' (geometry::model_tables), which render() has made
+/// for its statistics.
+Frame render_volume(const geometry::SceneIndex& index,
+                    std::span<const geometry::ModelTables> tables, const RenderOptions& options,
+                    RenderStats& stats);
+
+/// Williams' shadow maps: the visible surface as Method::volume finds it
+/// (scanline, exact where float cannot decide), then each visible sample
+/// compared with each light's depth views in floating point.
+Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options,
+                 RenderStats& stats);
+
+/// Ray-cast shadows with Embree: a primary ray per pixel and one occlusion
+/// ray per visible sample and light, all in single precision.
+Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options,
+                 RenderStats& stats);
+
+}  // namespace umbra::raster

@@ -1,0 +1,43 @@
+#pragma once
+// Reading a depth view at a visible sample (Williams 1978): the depth bias,
+// the lookup (nearest or bilinear depth), the dither of the lookup position
+// and percentage-closer filtering. Units and defaults: docs/shadow-maps.md.
+#include <raster/render.h>
+#include <raster/methods/shadow_map.h>
+
+#include <cstdint>
+
+namespace umbra::raster {
+
+/// A visible sample as a receiver: the point H and the unit normal of its
+/// surface (world space, either orientation).
+struct Receiver {
+  geometry::Vec3 point;
+  geometry::Vec3 normal;
+};
+
+/// The depth slack allowed at `receiver` before a stored depth shadows it:
+///   slope_bias · max(|∂z/∂u|, |∂z/∂v|) + constant_bias · 2^(e − 24),
+/// the receiver plane's view-space depth change per texel and the spacing of
+/// float depths at the receiver's depth z = m · 2^e (m in [0.5, 1)): the two
+/// terms of glPolygonOffset(factor, units) for a float depth buffer.
+/// Infinite when the receiver's plane contains the light's rays.
+double depth_bias(const MapView& view, const Receiver& receiver, const ShadowMapOptions& options);
+
+/// Williams' dither: a lookup offset in [-0.5, 0.5)² texels from a hash of
+/// the key (pixel and light, dither_key), the same for any thread schedule.
+struct Offset {
+  double du = 0, dv = 0;
+};
+std::uint64_t dither_key(int i, int j, std::uint32_t light);
+Offset dither_offset(std::uint64_t key);
+
+/// The fraction of the lookup's depth comparisons that find the receiver in
+/// front of the stored depth plus the bias, in [0, 1] (0 or 1 without PCF).
+/// `receiver.point` must lie in the view's buffer (the cube face that
+/// cube_face picks, or the directional view); `offset` moves the lookup
+/// position (dither; zero otherwise).
+double lit_fraction(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                    const ShadowMapOptions& options, Offset offset = {});
+
+}  // namespace umbra::raster

@@ -1,0 +1,250 @@
+// Method::volume: shadow volumes from contour edges with Bergeron's Nb_C and
+// In_Shadow flags, counted by the scanline renderer from each light's count
+// at the eye; what floating point cannot decide is decided again exactly, so
+// every pixel agrees with the oracle off boundaries.
+#include <geometry/exact/directions.h>
+#include <geometry/exact/predicates.h>
+#include <geometry/volumes/eye_start.h>
+#include <geometry/oracle/shadow_oracle.h>
+#include <geometry/volumes/builder.h>
+#include <geometry/volumes/crossings.h>
+#include <raster/light_range.h>
+#include <raster/light_reach.h>
+#include <util/parallel_rows.h>
+#include <util/phase_clock.h>
+#include <raster/pixel_sample.h>
+#include <raster/methods/render_methods.h>
+#include <raster/scanline/scanline.h>
+#include <raster/scanline/surface_table.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace umbra::raster {
+
+using geometry::ShadowClass;
+
+namespace {
+
+/// The shadow polygons enter the scanline's sorts beside the surfaces, but
+/// those whose plane holds the eye (eye.planes) go as eye planes: seen
+/// edge-on they would be drawn as nothing and flag their whole bounding
+/// box, and where they hold the eye, every pixel.
+void append_shadow_polygons(const geometry::ShadowVolumes& volumes, const geometry::EyeStart& eye,
+                            std::vector<RasterPolygon>& polygons) {
+  std::vector<std::uint8_t> through_eye(volumes.polygons.size(), 0);
+  for (const auto& planes : eye.planes)
+    for (const geometry::EyePlaneSide& side : planes) through_eye[side.polygon] = 1;
+  for (std::uint32_t k = 0; k < volumes.polygons.size(); ++k) {
+    if (through_eye[k]) continue;
+    const geometry::ShadowPolygon& s = volumes.polygons[k];
+    RasterPolygon raster;
+    raster.vertices = s.vertices;
+    raster.kind = RasterPolygon::Kind::shadow;
+    raster.id = k;
+    raster.light = s.light;
+    raster.nb_c = s.nb_c;
+    raster.group = s.group;
+    polygons.push_back(std::move(raster));
+  }
+}
+
+/// eye.planes as the scanline takes them. A side that holds the eye is
+/// crossed at the eye by the rays leaving on the side other than the
+/// perturbed eye's (where the start count was taken), which then add what
+/// crossing it from the eye's side adds: +nb_c from the side where
+/// orientation(u, v, L, ·) < 0, on which the side runs counter-clockwise.
+std::vector<EyePlane> eye_planes(const geometry::Scene& scene,
+                                 const geometry::ShadowVolumes& volumes,
+                                 const geometry::EyeStart& eye) {
+  std::vector<EyePlane> out;
+  for (std::uint32_t l = 0; l < eye.planes.size(); ++l)
+    for (const geometry::EyePlaneSide& side : eye.planes[l]) {
+      const geometry::ShadowPolygon& sp = volumes.polygons[side.polygon];
+      const geometry::Light& light = scene.lights[l];
+      const geometry::Vec3& u = sp.vertices[0];
+      const geometry::Vec3& v = sp.vertices[1];
+      // sign(n·d) = orientation(u, v, L, d at infinity).
+      const geometry::Vec3 n = light.type == geometry::LightType::point
+                                   ? geometry::exact_normal(u, v, light.position)
+                                   : -geometry::exact_cross(u, v, light.direction);
+      EyePlane plane;
+      plane.light = l;
+      plane.normal = n;
+      if (side.holds_eye) {
+        if (side.eye_side == geometry::Sign::positive) plane.normal = -n;
+        if (sp.group >= 0)
+          plane.group = sp.group;
+        else
+          plane.weight = side.eye_side == geometry::Sign::negative ? sp.nb_c : -sp.nb_c;
+      }
+      out.push_back(plane);
+    }
+  return out;
+}
+
+/// Every volume-casting polygon adds 1 inside its volume and nothing takes
+/// away, so a count is never negative; one that is shows a broken volume.
+ShadowClass class_of_count(int count, std::size_t pixel, std::uint32_t light) {
+  if (count < 0)
+    throw std::logic_error("shadow volume count " + std::to_string(count) + " at pixel " +
+                           std::to_string(pixel) + " for light " + std::to_string(light));
+  return count == 0 ? ShadowClass::lit : ShadowClass::shadowed;
+}
+
+}  // namespace
+
+Frame render_volume(const geometry::SceneIndex& index,
+                    std::span<const geometry::ModelTables> tables, const RenderOptions& options,
+                    RenderStats& stats) {
+  const geometry::Scene& scene = index.scene();
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const std::size_t lights = scene.lights.size();
+
+  Progress progress(options.progress);
+  progress.phase("volumes", 1);
+  auto start = Clock::now();
+  // No caps: an eye ray to its first hit crosses none (geometry/volumes/builder.h);
+  // so each side may end as soon as it has left the scene's box, which eye
+  // rays never leave before their hit: far less to scan than sides out to
+  // the light's reach. Without shadows: no volume at all, every count
+  // starts and stays at 0.
+  const geometry::ShadowVolumes volumes =
+      options.shadows
+          ? geometry::build_shadow_volumes(scene, tables,
+                                           {.caps = false,
+                                            .far_ends = geometry::FarEnds::leaving_bounds,
+                                            .threads = options.threads})
+          : geometry::ShadowVolumes{};
+  geometry::EyeStart eye;
+  if (options.shadows) {
+    eye = geometry::eye_start(index, volumes, options.threads);
+  } else {
+    eye.count.assign(lights, 0);
+    eye.degenerate.assign(lights, 0);
+    eye.planes.assign(lights, {});
+  }
+  for (const geometry::VolumeStats& v : volumes.stats) {
+    stats.contour_edges += v.contour_edges;
+    stats.twisted_polygons += v.twisted_polygons;
+  }
+  stats.shadow_polygons = volumes.polygons.size();
+  for (std::size_t l = 0; l < lights; ++l) stats.eye_degenerate_lights += eye.degenerate[l];
+  stats.seconds_volumes = seconds_since(start);
+
+  start = Clock::now();
+  SurfaceTable table = surface_table(index);
+  const ReachTable reach(table.polygons, scene.lights);
+  append_shadow_polygons(volumes, eye, table.polygons);
+  const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye);
+  progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
+  const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads,
+                                              eye.in_shadow, &progress, true, planes);
+  stats.seconds_raster = seconds_since(start);
+  stats.surface_polygons = table.entries.size();
+  stats.spans = scan.spans;
+  stats.seconds_raster_prepare = scan.seconds_prepare;
+  stats.shadow_bands_skipped = scan.shadow_bands_skipped;
+
+  start = Clock::now();
+  const geometry::VolumeCrossings crossings(scene, volumes);
+  Frame frame(camera.width, camera.height, lights, options.threads);
+  std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
+  // Light l's count at a visible point, decided exactly on the ideal
+  // volumes; where even that meets a degenerate configuration (the eye
+  // segment through an edge of a side polygon, in its plane, or the eye on a
+  // volume), by the oracle, and count.<i> then holds 1 for shadowed, 0 for lit.
+  const auto decide_exactly = [&](const geometry::SampleRay& ray, const geometry::SurfaceHit& hit,
+                                  const geometry::HitTriangle& tri, std::size_t pixel,
+                                  std::uint32_t l, PixelSample& sample) {
+    const std::optional<int> count = !options.shadows    ? std::optional<int>(0)
+                                     : eye.degenerate[l] ? std::nullopt
+                                                         : crossings.count(ray, tri, l, eye);
+    if (count) {
+      sample.counts[l] = *count;
+      sample.classes[l] = class_of_count(*count, pixel, l);
+    } else {
+      sample.classes[l] = geometry::classify_sample(index, ray, hit, l).cls;
+      sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+    }
+  };
+  progress.phase("shading", static_cast<std::uint64_t>(camera.height));
+  parallel_rows(camera.height, options.threads, [&](int j) {
+    PixelSample sample(lights);
+    std::uint64_t row_fallbacks = 0, row_recounts = 0;
+    for (int i = 0; i < camera.width; ++i) {
+      const std::size_t pixel = frame.pixel(i, j);
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+      const std::uint8_t doubt = scan.uncertain[pixel];
+      if (!(doubt & kSurfaceUncertain)) {
+        const std::int32_t id = scan.visible[pixel];
+        if (id < 0) {
+          store_background(pixel, frame);
+          continue;
+        }
+        const SurfaceEntry& entry = table.entries[static_cast<std::size_t>(id)];
+        const geometry::HitTriangle tri = geometry::hit_triangle(index, entry.hit);
+        sample.t = scan.depth[pixel];
+        sample.normal = entry.normal;
+        sample.look = entry.look;
+        for (std::uint32_t l = 0; l < lights; ++l) {
+          if (eye.degenerate[l]) {
+            // No count at the eye for this light: the oracle decides its
+            // samples, the scanline's answer stands for every other light.
+            sample.classes[l] = geometry::classify_sample(index, ray, entry.hit, l).cls;
+            sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+            continue;
+          }
+          if (reach.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
+            // count.<i> is 0 out of range, as in the exact fallback below.
+            // The scanline's count means nothing there: volumes are cut at
+            // the light's reach without caps, so it may even be negative.
+            sample.classes[l] = ShadowClass::out_of_range;
+            sample.counts[l] = 0;
+            continue;
+          }
+          if ((doubt & kLightsUncertain) && (scan.light_mask[pixel] & light_bit(l))) {
+            // A shadow polygon of this light was too close to call: its
+            // count again, exactly, at the visible point that stands.
+            ++row_recounts;
+            decide_exactly(ray, entry.hit, tri, pixel, l, sample);
+            continue;
+          }
+          sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
+          sample.classes[l] = class_of_count(sample.counts[l], pixel, l);
+        }
+        store_sample(scene, ray, sample, pixel, frame);
+        continue;
+      }
+      // Floating point could not decide this pixel: the visible surface and
+      // each light's count again, exactly.
+      ++row_fallbacks;
+      const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
+      if (!hit) {
+        store_background(pixel, frame);
+        continue;
+      }
+      const geometry::HitTriangle tri = set_surface(index, ray, *hit, sample);
+      for (std::uint32_t l = 0; l < lights; ++l) {
+        if (out_of_range(scene.lights[l], ray, tri)) {
+          sample.classes[l] = ShadowClass::out_of_range;
+          sample.counts[l] = 0;
+          continue;
+        }
+        decide_exactly(ray, *hit, tri, pixel, l, sample);
+      }
+      store_sample(scene, ray, sample, pixel, frame);
+    }
+    fallbacks += row_fallbacks;
+    recounts += row_recounts;
+    progress.advance();
+  });
+  stats.exact_fallback_pixels = fallbacks;
+  stats.exact_light_recounts = recounts;
+  stats.seconds_decide = seconds_since(start);
+  return frame;
+}
+
+}  // namespace umbra::raster

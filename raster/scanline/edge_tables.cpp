@@ -1,0 +1,347 @@
+// Preparing the scanline's input (raster/scanline/edge_tables.h): projection, the edge
+// table and its bucket sorts, the strips' geometry.
+#include <util/parallel_rows.h>
+#include <raster/scanline/edge_tables.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace umbra::raster::detail {
+
+RowRange active_rows(double y0, double y1, int height) {
+  const double lo = std::ceil(std::min(y0, y1) - 0.5);
+  const double hi = std::ceil(std::max(y0, y1) - 0.5) - 1;
+  RowRange r;
+  r.first = lo < 0 ? 0 : (lo > height ? height : static_cast<int>(lo));
+  r.last = hi < -1 ? -1 : (hi > height - 1 ? height - 1 : static_cast<int>(hi));
+  return r;
+}
+namespace {
+
+/// The surfaces' edges by first row of `range` (shadow polygons' edges go
+/// to the shadow pass polygon by polygon instead, see shadow_spans).
+void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, int height,
+                 HugeVector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
+                 HugeVector<int>& last) {
+  const auto counted = [&](const TableEdge& e) {
+    return !e.shadow && (e.*range).first <= (e.*range).last;
+  };
+  bucket.assign(static_cast<std::size_t>(height) + 2, 0);
+  for (const TableEdge& e : edges)
+    if (counted(e)) ++bucket[(e.*range).first + 1];
+  for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
+  // Made afresh every frame, 1-2 MB each with many lights: whole huge pages.
+  reserve_huge(order, bucket[height]);
+  reserve_huge(last, bucket[height]);
+  order.assign(bucket[height], 0);
+  std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+  for (std::uint32_t k = 0; k < edges.size(); ++k)
+    if (counted(edges[k])) order[fill[(edges[k].*range).first]++] = k;
+  last.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) last[k] = (edges[order[k]].*range).last;
+}
+
+}  // namespace
+
+/// Over the box, the plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is
+/// smallest at a corner when n·d keeps one sign, and its error bound
+/// (ProjectedPolygon::depth_error) is largest where |n·d| is smallest (n·d
+/// is linear) and |t·d − p0| largest; the latter is at most t·|d|₁ + |p0|,
+/// a convex function over a positive linear one, hence quasi-convex and
+/// largest at a corner too. The floor is the smallest depth less a
+/// millionth (far above the rounding of these few operations and of the
+/// sample rays, given |n·d| ≥ 1e-6·|n||d|) less that error. Only pixel
+/// centres matter, and they lie in [0.5, width − 0.5]: the box is cut to
+/// the image (a clipped polygon's part reaches 1e11 pixels, a box over which
+/// its plane's n·d would change sign) before any conversion.
+DepthFloor depth_floor(const ProjectedPolygon& polygon, const CameraSpace& camera, double x_lo,
+                       double x_hi, double y0, double y1) {
+  const geometry::CameraFrame& frame = camera.frame;
+  x_lo = std::max(x_lo, 0.0);
+  x_hi = std::min(x_hi, static_cast<double>(frame.width));
+  DepthFloor out;
+  out.i0 = clamp_column(std::ceil(x_lo - 0.5), frame.width);
+  out.i1 = clamp_column(std::floor(x_hi - 0.5) + 1, frame.width) - 1;
+  if (out.i0 > out.i1) return out;
+  if (!(y0 <= y1)) return out;  // no rows: no bound, the caller scans
+  const double ah = frame.a * frame.h;
+  const double n_length2 = polygon.n_length * polygon.n_length;
+  double t_min = kInfinity, offset = 0, denominator = kInfinity;
+  int sign = 0;
+  for (const double x : {x_lo, x_hi})
+    for (const double y : {y0, y1}) {
+      const Vec3 d{(2.0 * x / frame.width - 1.0) * ah, (1.0 - 2.0 * y / frame.height) * frame.h,
+                   1.0};
+      const double n_d = dot(polygon.n, d);
+      // |n·d| ≥ 1e-6·|n||d|, squared: no square root.
+      if (!(n_d * n_d >= 1e-12 * n_length2 * dot(d, d))) return out;
+      const int s = n_d > 0 ? 1 : -1;
+      if (sign != 0 && s != sign) return out;
+      sign = s;
+      const double t = polygon.n_dot_p0 / n_d;
+      if (!(t > 0)) return out;
+      t_min = std::min(t_min, t);
+      // |t·d − p0| ≤ t·|d|₁ + |p0|: a larger offset only makes the error
+      // bound larger.
+      offset = std::max(offset, t * (std::abs(d.x) + std::abs(d.y) + 1) + polygon.p0_length);
+      denominator = std::min(denominator, std::abs(n_d));
+    }
+  out.floor = t_min * (1 - 1e-6) - polygon.depth_error_of(offset, denominator);
+  // shade_shadow's first bound takes |t|·|d|·(1 + 1e-9) + |p0| for the
+  // offset, at most t·|d|₁ + |p0| at the box's extremes (above) but for that
+  // factor and the rounding of the actual rays: a millionth more covers both,
+  // and a millionth less of |n·d| the same on the other side.
+  out.error = polygon.depth_error_of(offset * (1 + 1e-6), denominator * (1 - 1e-6));
+  return out;
+}
+
+namespace {
+
+/// Edge e of a projected polygon as the y bucket sort holds it.
+TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double ray_slant) {
+  const geometry::CameraFrame& frame = camera.frame;
+  TableEdge t{};
+  t.edge = &e;
+  t.scan = active_rows(e.ya, e.yb, frame.height);
+  // The strip examined round the edge must hold every pixel whose centre
+  // can pass the distance test of flag_near_edges: 1e-6 px, the largest
+  // value of the rounding term 1e-12·m_scale·|d| in pixels, and the
+  // endpoints' own errors. The strip's bounds are computed in floating
+  // point too: its rows from y ± margin, its columns on a row from the line
+  // x0 + y·slope (below). x0 = xa − ya·slope and the evaluation each round
+  // by a few ulps of |xa| + (|ya| + |y|)·|slope|, the slope's own rounding
+  // moves the line by a few ulps of |slope|·|y − ya| on row y: all well
+  // inside 1e-14·(|xa| + |xb| + width + (|ya| + |yb| + height)·(1 + |slope|)),
+  // plus a thousandth of a pixel. The bound is linear in the coordinates so
+  // that an edge clipped at the near plane, whose far endpoint projects to
+  // 1e11 pixels, still gets a strip a few hundredths of a pixel wide. The
+  // strip is kept this narrow on purpose: with many lights tens of thousands
+  // of shadow edges cross every row, and each pixel in a strip costs a
+  // distance test. A segment less than a pixel tall has no slope here: it is
+  // taken whole along its x extent (dividing by its height would magnify
+  // rounding).
+  const bool tall = std::abs(e.yb - e.ya) >= 1;
+  const double slope = tall ? (e.xb - e.xa) / (e.yb - e.ya) : 0.0;
+  const double hyp = std::hypot(e.m.x, e.m.y);
+  const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
+  const double coordinate_rounding =
+      1e-14 * (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1 +
+               (std::abs(e.ya) + std::abs(e.yb) + frame.height + 1) * (1 + std::abs(slope)));
+  t.near_margin = 1e-3 + coordinate_rounding + 1e-6 + rounding_px + 2 * std::max(e.err_a, e.err_b);
+  if (!std::isfinite(t.near_margin)) t.near_margin = 4.0 * (frame.width + frame.height) + 4;
+  t.near = active_rows(std::min(e.ya, e.yb) - t.near_margin, std::max(e.ya, e.yb) + t.near_margin,
+                       frame.height);
+  // active_rows is half-open at the bottom; the strip is closed.
+  if (t.near.last < frame.height - 1 &&
+      t.near.last + 1 + 0.5 <= std::max(e.ya, e.yb) + t.near_margin)
+    ++t.near.last;
+  t.hyp = hyp;
+  t.rounding = 1e-12 * e.m_scale;
+  // The strip on a row: the pixel centres within `margin` of the segment's
+  // part at heights within `margin` of the row, where margin also holds the
+  // widening flag_near_edges applies on rows through an endpoint. Such a
+  // centre lies within margin·(1 + |dx/dy|) of the segment's line along the
+  // row, and within margin of the segment's x extent; the line's rounding
+  // is in coordinate_rounding.
+  const double margin = t.near_margin + std::max(e.err_a, e.err_b);
+  t.strip_x_lo = std::min(e.xa, e.xb) - margin;
+  t.strip_x_hi = std::max(e.xa, e.xb) + margin;
+  if (tall) {
+    t.strip_slope = slope;
+    t.strip_x0 = e.xa - e.ya * t.strip_slope;
+    t.strip_half_width = margin * (1 + std::abs(t.strip_slope));
+  } else {
+    t.strip_half_width = std::numeric_limits<double>::infinity();
+  }
+  if (!std::isfinite(t.strip_x0) || !std::isfinite(t.strip_slope)) {
+    // Off-screen coordinates so large that the line overflows: whole extent.
+    t.strip_x0 = t.strip_slope = 0;
+    t.strip_half_width = std::numeric_limits<double>::infinity();
+  }
+  return t;
+}
+
+/// Calls work(begin, end) over [0, count) in blocks, on up to `threads`
+/// threads; each index is handled alone, so the split changes nothing.
+template <class Work>
+void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
+  constexpr std::size_t kBlock = 2048;
+  const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
+  parallel_rows(blocks, threads, [&](int b) {
+    const std::size_t begin = static_cast<std::size_t>(b) * kBlock;
+    work(begin, std::min(count, begin + kBlock));
+  });
+}
+
+/// Every shadow polygon's edges and strips side by side (Scene::shadow_edges,
+/// shadow_strips), its span of rows, and the polygons bucketed by first row.
+void shadow_tables(Scene& scene, std::span<const std::size_t> first_edge, unsigned threads) {
+  const std::size_t polygons = scene.polygons.size();
+  reserve_huge(scene.shadow_spans, polygons);
+  scene.shadow_spans.assign(polygons, ShadowSpan{});
+  std::uint32_t count = 0;
+  for (std::size_t k = 0; k < polygons; ++k) {
+    if (scene.polygons[k].kind != RasterPolygon::Kind::shadow) continue;
+    scene.shadow_spans[k].begin = count;
+    count += static_cast<std::uint32_t>(first_edge[k + 1] - first_edge[k]);
+    scene.shadow_spans[k].end = count;
+  }
+  scene.shadow_edges.resize(count);
+  scene.shadow_strips.resize(count);
+  parallel_blocks(polygons, threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      ShadowSpan& span = scene.shadow_spans[k];
+      for (std::uint32_t n = span.begin; n < span.end; ++n) {
+        const auto e = static_cast<std::uint32_t>(first_edge[k] + (n - span.begin));
+        const TableEdge& t = scene.edges[e];
+        scene.shadow_edges[n] = {t.edge->m, row_scale(scene.camera, t.edge->m), e, t.scan.first,
+                                 t.scan.last};
+        scene.shadow_strips[n] = strip_of(t, e);
+        // The rows any of its edges is active on or any of its strips meets.
+        for (const RowRange& r : {t.scan, t.near}) {
+          if (r.first > r.last) continue;
+          if (span.first > span.last) {
+            span.first = r.first;
+            span.last = r.last;
+          } else {
+            span.first = std::min(span.first, r.first);
+            span.last = std::max(span.last, r.last);
+          }
+        }
+      }
+    }
+  });
+  const int height = scene.camera.frame.height;
+  std::vector<std::size_t>& bucket = scene.shadow_bucket;
+  bucket.assign(static_cast<std::size_t>(height) + 2, 0);
+  for (const ShadowSpan& span : scene.shadow_spans)
+    if (span.first <= span.last) ++bucket[span.first + 1];
+  for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
+  reserve_huge(scene.shadow_by_row, bucket[height]);
+  reserve_huge(scene.shadow_by_row_last, bucket[height]);
+  scene.shadow_by_row.assign(bucket[height], 0);
+  scene.shadow_by_row_last.assign(bucket[height], 0);
+  std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+  for (std::uint32_t k = 0; k < polygons; ++k) {
+    const ShadowSpan& span = scene.shadow_spans[k];
+    if (span.first > span.last) continue;
+    const std::size_t place = fill[span.first]++;
+    scene.shadow_by_row[place] = k;
+    scene.shadow_by_row_last[place] = span.last;
+  }
+}
+
+/// Input errors are found here, in polygon order, before any work is shared
+/// out: the first bad polygon is the one reported, whatever the threads.
+void check_input(std::span<const RasterPolygon> input, std::size_t lights,
+                 std::span<const std::uint8_t> group_start) {
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].light >= lights)
+      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
+                                  " names light " + std::to_string(input[k].light) + " of " +
+                                  std::to_string(lights));
+    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].group >= 0 &&
+        static_cast<std::size_t>(input[k].group) >= group_start.size())
+      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
+                                  " names group " + std::to_string(input[k].group) + " of " +
+                                  std::to_string(group_start.size()));
+    for (const Vec3& v : input[k].vertices)
+      if (!geometry::is_finite(v))
+        throw std::invalid_argument("scanline_render: polygon " + std::to_string(k) +
+                                    " has a non-finite vertex");
+  }
+}
+
+}  // namespace
+
+Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+              std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads) {
+  check_input(input, lights, group_start);
+  Scene scene;
+  scene.lights = lights;
+  scene.group_start.assign(group_start.begin(), group_start.end());
+  scene.camera = make_camera_space(frame, input);
+  const CameraSpace& camera = scene.camera;
+  // With many lights there are 100k+ polygons to project and edges to
+  // table: shared out, each written to its own slot.
+  HugeVector<std::size_t> room;
+  reserve_huge(room, input.size() + 1);
+  room.assign(input.size() + 1, 0);
+  for (std::size_t k = 0; k < input.size(); ++k)
+    room[k + 1] = room[k] + edge_room(input[k].vertices.size());
+  scene.edge_store.resize(room.back());
+  scene.polygons.resize(input.size());
+  parallel_blocks(input.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      scene.polygons[k] =
+          project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
+                          std::span(scene.edge_store).subspan(room[k], room[k + 1] - room[k]));
+  });
+  const double ah = frame.a * frame.h;
+  // |d| / |d_z| over all sample rays, with 1% slack for rounding.
+  const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
+  HugeVector<std::size_t> first_edge;
+  reserve_huge(first_edge, scene.polygons.size() + 1);
+  first_edge.assign(scene.polygons.size() + 1, 0);
+  for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
+    const ProjectedPolygon& polygon = scene.polygons[k];
+    if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
+    first_edge[k + 1] = first_edge[k] + polygon.edges.size();
+  }
+  scene.edges.resize(first_edge.back());
+  reserve_huge(scene.cullable, scene.polygons.size());
+  scene.cullable.assign(scene.polygons.size(), 0);
+  scene.floors.resize(scene.polygons.size());
+  parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const ProjectedPolygon& polygon = scene.polygons[k];
+      const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
+      // Band::behind_band widens a polygon's box by a pixel, which must hold
+      // its edges' strips and the rounding of its clip at the band's rows, a
+      // few ulps of |xa| + |xb| (1e-3 px at 1e12): polygons with wider strips
+      // or farther-off coordinates are always scanned. Clipped shadow
+      // polygons reach 1e11 pixels and cover much of the image: they must
+      // not be left out.
+      bool cullable = shadow && polygon.status == ProjectedPolygon::Status::active;
+      for (std::size_t n = 0; n < polygon.edges.size(); ++n) {
+        const ProjectedEdge& e = polygon.edges[n];
+        TableEdge& t = scene.edges[first_edge[k] + n];
+        t = table_edge(e, camera, ray_slant);
+        t.shadow = shadow;
+        cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e12 &&
+                   std::abs(e.ya) < 1e12 && std::abs(e.xb) < 1e12 && std::abs(e.yb) < 1e12;
+      }
+      scene.cullable[k] = cullable;
+      // The bounding box holds every endpoint's error; widened by a pixel
+      // like the band's box (Band::behind_band), and cut to the rows.
+      if (cullable)
+        scene.floors[k] =
+            depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1,
+                        std::max(polygon.bbox_y0 - 1, 0.0),
+                        std::min(polygon.bbox_y1 + 1, static_cast<double>(frame.height)));
+    }
+  });
+  bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,
+              scene.by_scan_row_last);
+  bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket,
+              scene.by_near_row_last);
+  shadow_tables(scene, first_edge, threads);
+  return scene;
+}
+
+void add_eye_planes(std::span<const EyePlane> planes, Scene& scene) {
+  for (const EyePlane& plane : planes) {
+    if (plane.light >= scene.lights || !geometry::is_finite(plane.normal) ||
+        (plane.group >= 0 && static_cast<std::size_t>(plane.group) >= scene.group_start.size()) ||
+        !(length(plane.normal) > 0))
+      throw std::invalid_argument("scanline_render: an eye plane of light " +
+                                  std::to_string(plane.light) +
+                                  " has a bad light, group or normal");
+    const Vec3 n = scene.camera.to_camera_direction(plane.normal);
+    scene.eye_planes.push_back({n, length(n), plane.light, plane.weight, plane.group});
+  }
+}
+
+}  // namespace umbra::raster::detail

@@ -1,0 +1,130 @@
+// The surface pass of the scanline (Bouknight): per row the x-sorted
+// crossings of the surfaces' edges cut it into spans; per span a
+// depth-ordered list of its surfaces gives each pixel its visible point.
+#include <raster/scanline/band_worker.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace umbra::raster::detail {
+
+/// Row j's surfaces: visible polygon, depth and their uncertainty;
+/// crossings_[0, carried) were active on the row before. The shadow
+/// polygons are counted afterwards (scan_shadows).
+void Band::scan_row(int j, std::size_t carried) {
+  const CameraSpace& camera = scene_.camera;
+  const int width = camera.frame.width;
+  for (int i = 0; i < width; ++i) {
+    ray_[row_base_ + i] =
+        camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
+    ray_length_[row_base_ + i] = length(ray_[row_base_ + i]);
+    const std::size_t p = pixel(i, j);
+    result_.visible[p] = -1;
+    result_.depth[p] = kInfinity;
+    result_.uncertain[p] = 0;
+    result_.light_mask[p] = 0;
+    visible_error_[row_base_ + i] = 0;
+    for (std::size_t l = 0; l < scene_.lights; ++l) result_.count[p * scene_.lights + l] = 0;
+  }
+  // x sort: insertion sort of the carried crossings (nearly sorted since
+  // the previous row), the new ones sorted apart, then one merge.
+
+  const double sy = row_sy_[j - band0_];
+  for (Crossing& c : crossings_) c.x = crossing_x(c.m, c.c, c.edge, j, sy);
+  const auto less = [](const Crossing& a, const Crossing& b) {
+    return a.x < b.x || (a.x == b.x && a.edge < b.edge);
+  };
+  for (std::size_t k = 1; k < carried; ++k) {
+    const Crossing c = crossings_[k];
+    std::size_t m = k;
+    for (; m > 0 && less(c, crossings_[m - 1]); --m) crossings_[m] = crossings_[m - 1];
+    crossings_[m] = c;
+  }
+  const auto middle = crossings_.begin() + static_cast<std::ptrdiff_t>(carried);
+  std::sort(middle, crossings_.end(), less);
+  std::inplace_merge(crossings_.begin(), middle, crossings_.end(), less);
+  // Spans: pixels whose centre i + 0.5 lies in [x_k, x_{k+1}).
+  for (std::size_t k = 0; k < crossings_.size(); ++k) {
+    toggle(crossings_[k].polygon);
+    // A span without surfaces is background: nothing to do.
+    if (k + 1 == crossings_.size() || surfaces_.empty()) continue;
+    const int i0 = first_column(crossings_[k].x, width);
+    const int i1 = first_column(crossings_[k + 1].x, width);
+    if (i0 < i1) {
+      shade_span(i0, i1, j);
+      ++spans_;
+    }
+  }
+  // Each polygon has an even number of active edges on a row, so every
+  // toggle is undone by now; clear anyway so one bad row cannot leak.
+  for (std::uint32_t polygon : surfaces_) inside_[polygon] = 0;
+  surfaces_.clear();
+}
+
+void Band::toggle(std::uint32_t polygon) {
+  std::vector<std::uint32_t>& list = surfaces_;
+  if (inside_[polygon]) {
+    inside_[polygon] = 0;
+    const std::uint32_t last = list.back();
+    list[slot_[polygon]] = last;
+    slot_[last] = slot_[polygon];
+    list.pop_back();
+  } else {
+    inside_[polygon] = 1;
+    slot_[polygon] = static_cast<std::uint32_t>(list.size());
+    list.push_back(polygon);
+  }
+}
+
+void Band::measure(DepthEntry& entry, const Vec3& d) const {
+  const ProjectedPolygon& polygon = scene_.polygons[entry.polygon];
+  entry.t = polygon.depth(d);
+  if (std::isnan(entry.t)) entry.t = kInfinity;  // ray in the plane; flagged by its error
+  entry.err = polygon.depth_error(d, entry.t);
+}
+
+/// One span. Its surfaces keep a depth-ordered list, re-sorted pixel to
+/// pixel by insertion (depths along a span change little); the first with
+/// t > 0 is visible.
+void Band::shade_span(int i0, int i1, int j) {
+  const double z_near = scene_.camera.z_near;
+  order_.clear();
+  for (std::uint32_t polygon : surfaces_) order_.push_back({0, 0, polygon});
+  for (int i = i0; i < i1; ++i) {
+    const Vec3& d = ray_[row_base_ + i];
+    for (DepthEntry& entry : order_) measure(entry, d);
+    for (std::size_t k = 1; k < order_.size(); ++k) {
+      const DepthEntry e = order_[k];
+      std::size_t m = k;
+      for (; m > 0 && before(e, order_[m - 1]); --m) order_[m] = order_[m - 1];
+      order_[m] = e;
+    }
+    const DepthEntry* visible = nullptr;
+    for (const DepthEntry& e : order_)
+      if (e.t > 0) {
+        visible = &e;
+        break;
+      }
+    const std::size_t p = pixel(i, j);
+    bool uncertain = false;
+    // A depth error bound that is not finite means the ray (nearly) lies
+    // in the polygon's plane: nothing about this polygon is decided. Then
+    // t against 0 (in front of the eye or behind it) and against the
+    // visible depth (which surface is in front; whether a shadow polygon is
+    // pierced before the visible point).
+    const auto check = [&](const DepthEntry& e) {
+      if (!std::isfinite(e.err) || too_close(e.t, e.err, 0.0, 0.0, z_near) ||
+          (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near)))
+        uncertain = true;
+    };
+    for (const DepthEntry& e : order_) check(e);
+    if (visible) {
+      result_.visible[p] = scene_.polygons[visible->polygon].id;
+      result_.depth[p] = visible->t;
+      visible_error_[row_base_ + i] = visible->err;
+    }
+    if (uncertain) result_.uncertain[p] |= kSurfaceUncertain;
+  }
+}
+
+}  // namespace umbra::raster::detail

@@ -1,0 +1,291 @@
+// The JSON scene loader: a full scene with exact values, and each bad input
+// reported with the file and the field path (or line and column).
+#include <util/input_error.h>
+#include <geometry/io/scene_json.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include <tests/support/input_error_matchers.h>
+
+namespace umbra::geometry {
+namespace {
+
+const std::filesystem::path kScenes = UMBRA_TEST_DATA_DIR "/scenes";
+
+using test::error_of;
+using test::starts_with;
+
+const char* const kCamera = R"("camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]})";
+const char* const kTriangle =
+    R"({"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]}})";
+
+// A scene with the given lights and models arrays (JSON text) and the camera above.
+std::string scene(const std::string& lights,
+                  const std::string& models = std::string("[") + kTriangle + "]") {
+  return std::string("{") + kCamera + ", \"lights\": " + lights + ", \"models\": " + models + "}";
+}
+
+// The error of parsing `text` as the scene file tests/data/scenes/s.json.
+std::string scene_error(const std::string& text) {
+  return error_of([&] { parse_scene(text, kScenes / "s.json"); });
+}
+
+const std::string kFile = (kScenes / "s.json").string();
+
+TEST(SceneIo, FullSceneLoadsWithExactValues) {
+  const Scene s = load_scene(kScenes / "full.json");
+  EXPECT_EQ(s.source, kScenes / "full.json");
+  EXPECT_EQ(s.camera.eye, (Vec3{0, 3, 9}));
+  EXPECT_EQ(s.camera.look_at, (Vec3{0, 0, 0}));
+  EXPECT_EQ(s.camera.up, (Vec3{0, 1, 0}));
+  EXPECT_EQ(s.camera.fov_y_deg, 35.5);
+  EXPECT_EQ(s.camera.width, 320);
+  EXPECT_EQ(s.camera.height, 200);
+  EXPECT_EQ(s.ambient, (Rgb{0.1, 0.2, 0.30000000000000004}));
+
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].type, LightType::point);
+  EXPECT_EQ(s.lights[0].position, (Vec3{3, 6, 2}));
+  EXPECT_EQ(s.lights[0].intensity, (Rgb{1, 0.5, 0.25}));
+  EXPECT_EQ(s.lights[0].dec_begin, 8.0);
+  EXPECT_EQ(s.lights[0].light_end, 20.0);
+  EXPECT_EQ(s.lights[0].decrease, 2);
+  EXPECT_EQ(s.lights[1].type, LightType::directional);
+  EXPECT_EQ(s.lights[1].direction, (Vec3{-1, -2, -1}));
+  EXPECT_EQ(s.lights[1].intensity, (Rgb{0.4, 0.4, 0.4}));
+  EXPECT_FALSE(s.lights[1].light_end.has_value());
+  // Defaults.
+  EXPECT_EQ(s.lights[2].position, (Vec3{0.1, 0, 0}));
+  EXPECT_EQ(s.lights[2].intensity, (Rgb{1, 1, 1}));
+  EXPECT_EQ(s.lights[2].dec_begin, 0.0);
+  EXPECT_FALSE(s.lights[2].light_end.has_value());
+  EXPECT_EQ(s.lights[2].decrease, 1);
+
+  ASSERT_EQ(s.models.size(), 2u);
+  const Model& floor = s.models[0];
+  EXPECT_EQ(floor.name, "floor");
+  EXPECT_EQ(floor.color, (Rgb{0.5, 0.6, 0.7}));
+  EXPECT_FALSE(floor.casts_shadows);
+  // quad.off scaled by 2, turned -90° about x (y' = z, z' = -y), moved by (1, 0, 0).
+  ASSERT_EQ(floor.vertices.size(), 4u);
+  EXPECT_EQ(floor.vertices[0], (Vec3{1, 0, 0}));
+  EXPECT_EQ(floor.vertices[1], (Vec3{3, 0, 0}));
+  EXPECT_EQ(floor.vertices[2], (Vec3{3, 0, -2}));
+  EXPECT_EQ(floor.vertices[3], (Vec3{1, 0, -2}));
+  ASSERT_EQ(floor.polygons.size(), 1u);
+  EXPECT_EQ(floor.polygons[0], (Polygon{0, 1, 2, 3}));
+
+  const Model& inline_model = s.models[1];
+  EXPECT_EQ(inline_model.name, "model1");
+  EXPECT_EQ(inline_model.color, (Rgb{0.8, 0.8, 0.8}));
+  EXPECT_TRUE(inline_model.casts_shadows);
+  ASSERT_EQ(inline_model.vertices.size(), 4u);
+  EXPECT_EQ(inline_model.vertices[0], (Vec3{0.1, 2, 0}));
+  EXPECT_EQ(inline_model.vertices[1], (Vec3{1.0 + 0.1, 3, 0}));
+  EXPECT_EQ(inline_model.vertices[2], (Vec3{1.0 + 0.1, 2, 3}));
+  EXPECT_EQ(inline_model.vertices[3], (Vec3{0.1, 3, 3}));
+  ASSERT_EQ(inline_model.polygons.size(), 2u);
+  EXPECT_EQ(inline_model.polygons[0], (Polygon{0, 1, 2, 3}));
+  EXPECT_EQ(inline_model.polygons[1], (Polygon{0, 2, 1}));
+}
+
+TEST(SceneIo, DefaultsOfAMinimalScene) {
+  const Scene s =
+      parse_scene(std::string("{") + kCamera + ", \"models\": [" + kTriangle + "]}", "min.json");
+  EXPECT_EQ(s.camera.up, (Vec3{0, 1, 0}));
+  EXPECT_EQ(s.camera.fov_y_deg, 40);
+  EXPECT_EQ(s.camera.width, 640);
+  EXPECT_EQ(s.camera.height, 480);
+  EXPECT_EQ(s.ambient, (Rgb{0.08, 0.08, 0.08}));
+  EXPECT_TRUE(s.lights.empty());
+  EXPECT_EQ(s.models[0].name, "model0");
+}
+
+TEST(SceneIo, MissingFile) {
+  const std::filesystem::path missing = kScenes / "no_such_scene.json";
+  EXPECT_EQ(error_of([&] { load_scene(missing); }),
+            missing.string() + ": cannot open scene file: No such file or directory");
+}
+
+TEST(SceneIo, MalformedJsonReportsLineAndColumn) {
+  const std::string msg = scene_error("{\n  \"camera\": {\"eye\": [0, 0, 5],,\n");
+  EXPECT_TRUE(starts_with(msg, kFile + ":2:31: malformed JSON: syntax error")) << msg;
+  // At the end of the input the column is just past the last character.
+  const std::string at_end = scene_error("{\"camera\": {}");
+  EXPECT_TRUE(starts_with(at_end, kFile + ":1:14: malformed JSON")) << at_end;
+}
+
+TEST(SceneIo, DuplicateKeyIsAnError) {
+  EXPECT_EQ(scene_error(std::string("{") + kCamera + ", \"models\": [], \"models\": []}"),
+            kFile + ": models: duplicate field 'models'");
+}
+
+TEST(SceneIo, WrongTypeNamesField) {
+  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": "up there"}])")),
+            kFile + ": lights[0].position: expected an array of 3 numbers, found a string");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [1, 2]}])")),
+            kFile + ": lights[0].position: expected an array of 3 numbers, found an array of 2");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [1, 2, true]}])")),
+            kFile + ": lights[0].position[2]: expected a number, found a boolean");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"polygons": {"vertices": [[0,0,0]], "faces": [[0,0,0]]}, "casts_shadows": 1}])")),
+      kFile + ": models[0].casts_shadows: expected true or false, found an integer");
+  EXPECT_EQ(scene_error(std::string("{\"camera\": {\"eye\": [0,0,5], \"look_at\": [0,0,0], "
+                                    "\"width\": 640.5}, \"models\": [") +
+                        kTriangle + "]}"),
+            kFile + ": camera.width: expected an integer, found a number");
+}
+
+TEST(SceneIo, NonFiniteNumbersAreRefused) {
+  // JSON has no NaN: a bare NaN is a syntax error with its position.
+  EXPECT_TRUE(starts_with(scene_error(scene(R"([{"type": "point", "position": [1, NaN, 2]}])")),
+                          kFile + ":1:"));
+  // 1e999 overflows a double: named by its field path.
+  const std::string msg = scene_error(scene(R"([{"type": "point", "position": [1, 2, 1e999]}])"));
+  EXPECT_TRUE(
+      starts_with(msg, kFile + ": lights[0].position[2]: number 1e999 is not a finite double"))
+      << msg;
+}
+
+TEST(SceneIo, OutOfRangeFaceIndexNamesField) {
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2],[0,1,3]]}}])")),
+      kFile + ": models[0].polygons.faces[1][2]: vertex index 3 out of range: 3 vertices");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,-1]]}}])")),
+      kFile + ": models[0].polygons.faces[0][2]: vertex index -1 out of range: 3 vertices");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1]]}}])")),
+      kFile + ": models[0].polygons.faces[0]: face has 2 vertices; at least 3 are needed");
+}
+
+TEST(SceneIo, EmptyMeshIsAnError) {
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [], "faces": []}}])")),
+            kFile + ": models[0].polygons.faces: empty mesh: no polygon");
+  EXPECT_EQ(scene_error(scene("[]", "[]")), kFile + ": models: a scene needs at least one model");
+}
+
+TEST(SceneIo, MeshErrorNamesFieldAndMeshLine) {
+  const std::string mesh = (kScenes / "meshes/bad_index.obj").string();
+  EXPECT_EQ(scene_error(scene("[]", R"([{"mesh": "meshes/bad_index.obj"}])")),
+            kFile + ": models[0].mesh: " + mesh +
+                ":5: face index 9 out of range: 3 vertices defined so far");
+  const std::string missing = (kScenes / "meshes/nothing.off").string();
+  EXPECT_EQ(scene_error(scene("[]", R"([{"mesh": "meshes/nothing.off"}])")),
+            kFile + ": models[0].mesh: " + missing +
+                ": cannot open mesh file: No such file or directory");
+}
+
+TEST(SceneIo, UnknownLightType) {
+  EXPECT_EQ(scene_error(scene(R"([{"type": "spot", "position": [0, 0, 0]}])")),
+            kFile + ": lights[0].type: unknown light type 'spot'; expected point or directional");
+  EXPECT_EQ(scene_error(scene(R"([{"position": [0, 0, 0]}])")),
+            kFile + ": lights[0].type: missing required field 'type'");
+}
+
+TEST(SceneIo, UnknownFieldIsAnError) {
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "point", "position": [0, 5, 0], "light_ends": 3}])")),
+      kFile +
+          ": lights[0].light_ends: unknown field 'light_ends'; expected one of type, position, "
+          "intensity, dec_begin, light_end, decrease");
+  EXPECT_TRUE(starts_with(scene_error(std::string("{") + kCamera + ", \"model\": []}"),
+                          kFile + ": model: unknown field 'model'"));
+}
+
+TEST(SceneIo, MissingCamera) {
+  EXPECT_EQ(scene_error(std::string("{\"models\": [") + kTriangle + "]}"),
+            kFile + ": camera: missing required field 'camera'");
+  EXPECT_EQ(scene_error(std::string("{\"camera\": {\"eye\": [0, 0, 1]}, \"models\": [") +
+                        kTriangle + "]}"),
+            kFile + ": camera.look_at: missing required field 'look_at'");
+}
+
+TEST(SceneIo, CameraRanges) {
+  auto camera = [](const std::string& fields) {
+    return scene_error(std::string("{\"camera\": {") + fields + "}, \"models\": [" + kTriangle +
+                       "]}");
+  };
+  EXPECT_EQ(camera(R"("eye": [1, 2, 3], "look_at": [1, 2, 3])"),
+            kFile + ": camera.look_at: equals camera.eye: there is no view direction");
+  EXPECT_EQ(camera(R"("eye": [0, 0, 0], "look_at": [0, 2, 0])"),
+            kFile + ": camera.up: is parallel to the view direction look_at - eye (or zero)");
+  EXPECT_EQ(camera(R"("eye": [0, 0, 0], "look_at": [0, 0, 1], "fov_y_deg": 180)"),
+            kFile + ": camera.fov_y_deg: must be in (0, 180) degrees");
+  EXPECT_EQ(camera(R"("eye": [0, 0, 0], "look_at": [0, 0, 1], "height": 0)"),
+            kFile + ": camera.height: must be an integer in [1, 16384]");
+  EXPECT_EQ(camera(R"("eye": [0, 0, 0], "look_at": [0, 0, 1], "width": 16385)"),
+            kFile + ": camera.width: must be an integer in [1, 16384]");
+}
+
+TEST(SceneIo, LightRules) {
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "directional", "direction": [0, -1, 0], "decrease": 2}])")),
+      kFile + ": lights[0].decrease: 'decrease' means nothing for a directional light");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "directional", "position": [0, -1, 0]}])")),
+            kFile +
+                ": lights[0].position: unknown field 'position'; expected one of type, "
+                "direction, intensity");
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "directional", "direction": [0, -1, 0], "light_end": 5}])")),
+      kFile + ": lights[0].light_end: 'light_end' means nothing for a directional light");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "directional", "direction": [0, 0, 0]}])")),
+            kFile + ": lights[0].direction: must not be the zero vector");
+  EXPECT_EQ(scene_error(scene(
+                R"([{"type": "point", "position": [0, 0, 0], "dec_begin": 5, "light_end": 4}])")),
+            kFile + ": lights[0].light_end: must be >= dec_begin");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 0, 0], "light_end": 0}])")),
+            kFile + ": lights[0].light_end: must be > 0");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 0, 0], "decrease": -1}])")),
+            kFile + ": lights[0].decrease: must be an integer in [0, 2147483647]");
+  EXPECT_EQ(scene_error(
+                scene(R"([{"type": "point", "position": [0, 0, 0], "intensity": [1, -0.5, 1]}])")),
+            kFile + ": lights[0].intensity[1]: must be >= 0");
+}
+
+TEST(SceneIo, ModelRules) {
+  EXPECT_EQ(scene_error(scene("[]", R"([{"name": "a"}])")),
+            kFile + ": models[0]: needs exactly one of 'mesh' or 'polygons'");
+  EXPECT_EQ(scene_error(scene(
+                "[]", std::string("[") + kTriangle +
+                          R"(, {"mesh": "meshes/quad.off", "transform": {"scale": [1, 0, 1]}}])")),
+            kFile + ": models[1].transform.scale: must not be zero");
+  // 1 · 1e308 + 1.7e308 overflows.
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"mesh": "meshes/quad.off", "transform": {"scale": 1e308, "translate": [1.7e308, 0, 0]}}])")),
+      kFile + ": models[0].transform: a transformed vertex is not finite");
+}
+
+}  // namespace
+}  // namespace umbra::geometry
+
+namespace umbra::geometry {
+namespace {
+
+TEST(SceneIo, SpecularAndShininess) {
+  const std::string glossy =
+      R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]},
+           "specular": [0.5, 0.25, 1], "shininess": 64}])";
+  const Scene s = parse_scene(scene("[]", glossy), kScenes / "s.json");
+  EXPECT_EQ(s.models[0].specular, (Rgb{0.5, 0.25, 1}));
+  EXPECT_EQ(s.models[0].shininess, 64);
+  const Scene plain = parse_scene(scene("[]"), kScenes / "s.json");
+  EXPECT_EQ(plain.models[0].specular, (Rgb{0, 0, 0}));
+  EXPECT_EQ(plain.models[0].shininess, 32);
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]],
+                                          "faces": [[0,1,2]]}, "shininess": 0.5}])")),
+            kFile + ": models[0].shininess: must be in [1, 10000]");
+}
+
+}  // namespace
+}  // namespace umbra::geometry

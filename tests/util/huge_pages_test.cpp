@@ -1,0 +1,80 @@
+// The per-pixel buffers' allocator (util/huge_pages.h): large blocks are
+// mapped apart on 2 MiB boundaries, small ones come from std::allocator, and
+// both hold what is written to them through every container operation.
+#include <util/huge_pages.h>
+#include <util/uninitialized.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+
+namespace umbra::raster {
+namespace {
+
+constexpr std::uintptr_t kTwoMiB = std::uintptr_t{2} << 20;
+
+std::uintptr_t address(const void* p) { return reinterpret_cast<std::uintptr_t>(p); }
+
+TEST(HugePages, LargePlanesAreAlignedToHugePagesAndHoldTheirValues) {
+  // A 1280x720 float plane: 3.7 MB, above the threshold.
+  PixelPlane plane(1280 * 720);
+  ASSERT_GE(plane.size() * sizeof(float), kHugePageMinBytes);
+  EXPECT_EQ(address(plane.data()) % kTwoMiB, 0u);
+  // Value-initialized, then written in full and read back.
+  EXPECT_EQ(std::count(plane.begin(), plane.end(), 0.0f), static_cast<long>(plane.size()));
+  std::iota(plane.begin(), plane.end(), 0.0f);
+  EXPECT_EQ(plane[0], 0.0f);
+  EXPECT_EQ(plane[921599], 921599.0f);
+  // Growing moves the values to a new mapping, also aligned.
+  plane.resize(plane.size() * 2, -1.0f);
+  EXPECT_EQ(address(plane.data()) % kTwoMiB, 0u);
+  EXPECT_EQ(plane[921599], 921599.0f);
+  EXPECT_EQ(plane[921600], -1.0f);
+  // Copies hold the same values in their own block.
+  const PixelPlane copy = plane;
+  EXPECT_NE(copy.data(), plane.data());
+  EXPECT_EQ(copy, plane);
+}
+
+TEST(HugePages, SmallBlocksAndShrinkingBackWork) {
+  PixelPlane small(100, 2.5f);
+  EXPECT_EQ(small[99], 2.5f);
+  // Shrinking below the threshold and releasing takes the same path back
+  // (deallocate is given the size allocate was).
+  PixelPlane big(kHugePageMinBytes / sizeof(float) + 1, 1.0f);
+  big.resize(10);
+  big.shrink_to_fit();
+  EXPECT_EQ(big.size(), 10u);
+  EXPECT_EQ(big[9], 1.0f);
+}
+
+TEST(HugePages, UninitializedVectorsUseThemToo) {
+  UninitializedVector<std::uint64_t> masks;
+  masks.resize(1 << 20);  // 8 MiB
+  EXPECT_EQ(address(masks.data()) % kTwoMiB, 0u);
+  masks[(1 << 20) - 1] = 7;
+  EXPECT_EQ(masks.back(), 7u);
+}
+
+TEST(HugePages, ReserveHugeGivesSmallListsAWholeAlignedPageThatNeverMoves) {
+  // A worker's per-polygon array: 134k bytes, far below the threshold.
+  HugeVector<std::uint8_t> flags;
+  reserve_huge(flags, 134000);
+  EXPECT_GE(flags.capacity() * sizeof(std::uint8_t), kHugePageMinBytes);
+  EXPECT_EQ(address(flags.data()) % kTwoMiB, 0u);
+  flags.assign(134000, 3);
+  EXPECT_EQ(flags.back(), 3);
+  // An upper bound reserved up front: growing to it never moves the list.
+  HugeVector<std::uint64_t> list;
+  reserve_huge(list, 1 << 19);  // 4 MiB
+  EXPECT_GE(list.capacity(), std::size_t{1} << 19);
+  const std::uint64_t* first = list.data();
+  for (std::uint64_t k = 0; k < (1 << 19); ++k) list.push_back(k);
+  EXPECT_EQ(list.data(), first);
+  EXPECT_EQ(list[(1 << 19) - 1], (1u << 19) - 1);
+}
+
+}  // namespace
+}  // namespace umbra::raster
