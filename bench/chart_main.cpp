@@ -133,7 +133,7 @@ void save_picture(const Args& args, const std::string& stem, const raster::Frame
 void dump_scene(const Args& args, const std::string& name, const geometry::Scene& scene) {
   if (args.dump.empty()) return;
   fs::create_directories(args.dump);
-  geometry::write_all_or_nothing(
+  util::write_all_or_nothing(
       {{fs::path(args.dump) / (name + ".json"), fuzz::scene_to_json(scene)}});
 }
 
@@ -189,7 +189,7 @@ int run(const Args& args) {
   }
   const fs::path out = args.out;
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  geometry::write_all_or_nothing({{out, csv}});
+  util::write_all_or_nothing({{out, csv}});
   std::fprintf(stderr, "wrote %s\n", out.string().c_str());
   return 0;
 }

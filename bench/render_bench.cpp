@@ -111,7 +111,7 @@ void dump_scenes() {
     std::string stem = name;
     std::replace(stem.begin(), stem.end(), '/', '-');
     std::replace(stem.begin(), stem.end(), ':', '-');
-    geometry::write_all_or_nothing(
+    util::write_all_or_nothing(
         {{std::filesystem::path(dir) / (stem + ".json"), fuzz::scene_to_json(scene)}});
   }
 }

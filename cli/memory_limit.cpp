@@ -156,7 +156,7 @@ std::string human_bytes(std::uint64_t bytes) {
 void check_memory(std::uint64_t needed, const std::optional<MemoryLimit>& limit,
                   const std::string& where, const std::string& what) {
   if (!limit || needed <= limit->bytes) return;
-  throw geometry::InputError(
+  throw util::InputError(
       where, fmt::format("{} needs ~{}, limit {} ({}); make the image smaller or use fewer "
                          "lights, or raise --memory-limit",
                          what, human_bytes(needed), human_bytes(limit->bytes), limit->source));

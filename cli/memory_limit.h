@@ -33,7 +33,7 @@ void add_memory_limit_option(CLI::App* cmd, std::string& value);
 /// when given, else machine_memory_limit().
 std::optional<MemoryLimit> memory_limit(const std::string& option);
 
-/// Throws geometry::InputError at `where` ("scene.json") when `needed`
+/// Throws util::InputError at `where` ("scene.json") when `needed`
 /// bytes exceed the limit: "<what> needs ~N GiB, limit M GiB (<source>); ...".
 void check_memory(std::uint64_t needed, const std::optional<MemoryLimit>& limit,
                   const std::string& where, const std::string& what);

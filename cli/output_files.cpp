@@ -12,7 +12,7 @@
 namespace umbra::cli {
 
 namespace fs = std::filesystem;
-using geometry::InputError;
+using util::InputError;
 
 namespace {
 
@@ -49,16 +49,16 @@ void check_output_path(const fs::path& path, std::initializer_list<std::string_v
     if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) {
       std::string allowed;
       for (const auto e : extensions) allowed += (allowed.empty() ? "" : " or ") + std::string(e);
-      throw InputError(path.string(), fmt::format("unknown output extension '{}'; use {}",
+      throw util::InputError(path.string(), fmt::format("unknown output extension '{}'; use {}",
                                                   path.extension().string(), allowed));
     }
   }
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw InputError(path.string(), fmt::format("directory '{}' does not exist", dir.string()));
+    throw util::InputError(path.string(), fmt::format("directory '{}' does not exist", dir.string()));
   if (fs::is_directory(path, ec))
-    throw InputError(path.string(), "is a directory; name an output file");
+    throw util::InputError(path.string(), "is a directory; name an output file");
 }
 
 void check_outputs_distinct(const std::vector<NamedFile>& inputs,
@@ -66,7 +66,7 @@ void check_outputs_distinct(const std::vector<NamedFile>& inputs,
   for (std::size_t o = 0; o < outputs.size(); ++o) {
     const NamedFile& out = outputs[o];
     const auto refuse = [&](const NamedFile& other) {
-      throw InputError(out.path.string(), fmt::format("{} names {} '{}' too; choose another file",
+      throw util::InputError(out.path.string(), fmt::format("{} names {} '{}' too; choose another file",
                                                       out.label, other.label, other.path.string()));
     };
     for (const NamedFile& in : inputs)
@@ -84,7 +84,7 @@ std::vector<NamedFile> scene_inputs(const geometry::Scene& scene) {
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {
-  geometry::write_all_or_nothing({{path, text}});
+  util::write_all_or_nothing({{path, text}});
 }
 
 }  // namespace umbra::cli

@@ -15,7 +15,7 @@ namespace umbra::cli {
 /// The path's extension in lower case (".EXR" -> ".exr").
 std::string lowercase_extension(const std::filesystem::path& path);
 
-/// Throws geometry::InputError naming `path` when its extension is not one of
+/// Throws util::InputError naming `path` when its extension is not one of
 /// `extensions` (compared case-insensitively, each with its dot: ".png"), or
 /// when its directory does not exist. An empty list accepts any extension.
 void check_output_path(const std::filesystem::path& path,
@@ -28,7 +28,7 @@ struct NamedFile {
   std::string label;
 };
 
-/// Throws geometry::InputError naming the output when one of `outputs`
+/// Throws util::InputError naming the output when one of `outputs`
 /// names one of `inputs` or an earlier output: the same path once links
 /// and `.`/`..` are resolved, or the same file (device and inode) under
 /// another name, such as a hard link. Writing it would destroy an input
@@ -40,7 +40,7 @@ void check_outputs_distinct(const std::vector<NamedFile>& inputs,
 std::vector<NamedFile> scene_inputs(const geometry::Scene& scene);
 
 /// Writes `text` to a temporary file beside `path`, then renames it onto
-/// `path`. Throws geometry::InputError naming `path` on failure, leaving
+/// `path`. Throws util::InputError naming `path` on failure, leaving
 /// neither the temporary nor a partial `path`.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 

@@ -20,7 +20,7 @@ void ProgressBar::finish() {
   drawn_ = false;
 }
 
-raster::ProgressCallback ProgressBar::callback() {
+util::ProgressCallback ProgressBar::callback() {
   if (!active_) return {};
   // Progress calls this under its own lock, one call at a time.
   return [this](std::string_view phase, double fraction) {

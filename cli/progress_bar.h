@@ -17,7 +17,7 @@ class ProgressBar {
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
 
-  raster::ProgressCallback callback();
+  util::ProgressCallback callback();
   /// Erases the bar (if drawn) and stops drawing: call before printing.
   void finish();
 

@@ -6,6 +6,7 @@
 #include <cli/render_command.h>
 #include <cli/stats_json.h>
 #include <fmt/format.h>
+#include <util/phase_clock.h>
 #include <util/input_error.h>
 #include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
@@ -37,9 +38,9 @@ void check_method_options(const RenderArgs& args) {
   const bool map_given = args.map_resolution || args.map_bias || args.map_slope_bias ||
                          args.map_lookup || args.map_dither || args.map_pcf;
   if (map_given && args.method != "map")
-    throw geometry::InputError("--map-*", "applies to --method map only");
+    throw util::InputError("--map-*", "applies to --method map only");
   if (args.ray_epsilon && args.method != "ray")
-    throw geometry::InputError("--ray-epsilon", "applies to --method ray only");
+    throw util::InputError("--ray-epsilon", "applies to --method ray only");
 }
 
 raster::ShadowMapOptions map_options(const RenderArgs& args) {
@@ -53,10 +54,6 @@ raster::ShadowMapOptions map_options(const RenderArgs& args) {
   map.dither = args.map_dither;
   if (args.map_pcf) map.pcf = *args.map_pcf;
   return map;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -137,7 +134,7 @@ int run_render(const RenderArgs& args) {
   const bool stats_to_stdout = args.stats_json == "-";
 
   if (args.no_shadows && args.method != "volume")
-    throw geometry::InputError("--no-shadows", "applies to --method volume only");
+    throw util::InputError("--no-shadows", "applies to --method volume only");
   check_method_options(args);
   // Cheap checks first: a long render must not end in "unknown extension".
   check_output_path(output, {".png", ".exr"});
@@ -152,7 +149,7 @@ int run_render(const RenderArgs& args) {
   auto phase = std::chrono::steady_clock::now();
   const geometry::Scene scene = geometry::load_scene(scene_path);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
-  timings.load = seconds_since(phase);
+  timings.load = util::seconds_since(phase);
 
   raster::RenderOptions options;
   options.method = parse_method(args.method);
@@ -172,12 +169,12 @@ int run_render(const RenderArgs& args) {
   phase = std::chrono::steady_clock::now();
   const raster::Frame frame = raster::render(scene, options, &stats);
   bar.finish();
-  timings.render = seconds_since(phase);
+  timings.render = util::seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();
   raster::write_frame(frame, output);
-  timings.write = seconds_since(phase);
-  timings.total = seconds_since(start);
+  timings.write = util::seconds_since(phase);
+  timings.total = util::seconds_since(start);
 
   if (!args.stats_json.empty()) {
     RenderRun run;

@@ -31,7 +31,7 @@ struct RenderArgs {
 /// Adds the `render` subcommand to `app`, parsing into `args`.
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
 
-/// Loads, renders, writes. Returns the exit code; throws geometry::InputError
+/// Loads, renders, writes. Returns the exit code; throws util::InputError
 /// on bad input (before any output file is written).
 int run_render(const RenderArgs& args);
 

@@ -26,7 +26,7 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args);
 /// Compares the render's shadow.<i> channels with the exact oracle, writes the
 /// mismatch mask and prints the summary. Returns kExitMismatches when any
 /// non-boundary sample disagrees, else kExitSuccess; throws
-/// geometry::InputError on bad input (before any output file is written).
+/// util::InputError on bad input (before any output file is written).
 int run_validate(const ValidateArgs& args);
 
 }  // namespace umbra::cli

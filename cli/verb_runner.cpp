@@ -26,7 +26,7 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e, const char
 int run_verb(const std::function<int()>& verb) {
   try {
     return verb();
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     fmt::print(stderr, "umbra: {}\n", one_line(e.what()));
     return kExitBadInput;
   } catch (const std::bad_alloc&) {
@@ -48,7 +48,7 @@ int run_verb(const std::function<int()>& verb) {
 void install_signal_handlers() {
   // Ctrl-C, kill or a closed terminal while a file is written: remove the
   // hidden temporary, then end as the signal says.
-  geometry::remove_temporaries_on_signals();
+  util::remove_temporaries_on_signals();
   // A file size limit (ulimit -f) would kill the process mid-write with
   // SIGXFSZ; ignored, the write fails with EFBIG and is reported, exit 2.
   std::signal(SIGXFSZ, SIG_IGN);

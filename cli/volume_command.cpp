@@ -5,6 +5,7 @@
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
 #include <fmt/format.h>
+#include <util/phase_clock.h>
 #include <util/input_error.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/volumes/builder.h>
@@ -21,10 +22,6 @@ namespace umbra::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// "light 0: 120, light 1: 96"
 std::string faces_per_light(const VolumeCounts& counts) {
@@ -96,17 +93,17 @@ int run_volume(const VolumeArgs& args) {
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   check_memory(raster::estimate_volume_bytes(scene), memory_limit(args.memory_limit),
                scene_path.string(), "building the volumes of " + lights_text(scene.lights.size()));
-  timings.load = seconds_since(phase);
+  timings.load = util::seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();
   const geometry::ShadowVolumes volumes =
       geometry::build_shadow_volumes(scene, {.caps = true, .threads = args.threads});
-  timings.volumes = seconds_since(phase);
+  timings.volumes = util::seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();
   geometry::write_volumes(volumes, output);
-  timings.write = seconds_since(phase);
-  timings.total = seconds_since(start);
+  timings.write = util::seconds_since(phase);
+  timings.total = util::seconds_since(start);
 
   const VolumeCounts counts = count_volume_faces(volumes, scene.lights.size());
   if (!args.stats_json.empty()) {

@@ -19,7 +19,7 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args);
 
 /// Loads the scene, builds every light's shadow volume and exports it
 /// (geometry/export/volume_export.h). Returns the exit code; throws
-/// geometry::InputError on bad input (before any output file is written).
+/// util::InputError on bad input (before any output file is written).
 int run_volume(const VolumeArgs& args);
 
 }  // namespace umbra::cli

@@ -148,7 +148,7 @@ int run_fuzz_export(const FuzzArgs& args) {
   const std::filesystem::path dir = args.dir;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw geometry::InputError(dir.string(), ec.message());
+  if (ec) throw util::InputError(dir.string(), ec.message());
   const auto [first, end] = scene_range(args);
   for (std::uint64_t i = first; i < end; ++i) {
     const fuzz::GeneratedScene g =

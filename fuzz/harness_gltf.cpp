@@ -27,12 +27,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const geometry::PolygonSoup soup = geometry::parse_gltf_polygon_soup(bytes, file);
     for (const auto& p : soup.polygons)
       for (auto i : p) UMBRA_FUZZ_CHECK(kName, i < soup.vertices.size(), "index out of range");
-  } catch (const geometry::InputError&) {
+  } catch (const util::InputError&) {
   }
   geometry::Scene scene;
   try {
     scene = geometry::parse_gltf_scene(bytes, file);
-  } catch (const geometry::InputError&) {
+  } catch (const util::InputError&) {
     return 0;
   }
   fuzz::check_loader_promises(kName, scene);

@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   raster::ShadowChannels channels;
   try {
     channels = raster::decode_shadow_channels(bytes, "fuzz.exr", std::uint64_t{1} << 20);
-  } catch (const geometry::InputError&) {
+  } catch (const util::InputError&) {
     return 0;
   }
   const std::size_t n = static_cast<std::size_t>(channels.width) * channels.height;

@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   geometry::PolygonSoup soup;
   try {
     soup = geometry::parse_polygon_soup(bytes, "fuzz." UMBRA_FUZZ_MESH_EXT);
-  } catch (const geometry::InputError&) {
+  } catch (const util::InputError&) {
     return 0;
   }
   UMBRA_FUZZ_CHECK(kName, !soup.polygons.empty(), "loaded without polygons");

@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Mesh paths resolve under a folder that does not exist: a mesh field
     // must fail with InputError, never touch the real file system.
     scene = geometry::parse_scene(text, "/nonexistent-umbra-fuzz/scene.json");
-  } catch (const geometry::InputError&) {
+  } catch (const util::InputError&) {
     return 0;
   }
   fuzz::check_loader_promises("scene_json", scene);

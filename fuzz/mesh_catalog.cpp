@@ -26,7 +26,7 @@ std::vector<MeshFile> find_mesh_files(const std::vector<fs::path>& roots) {
       for (const auto& entry : fs::recursive_directory_iterator(root))
         if (entry.is_regular_file() && is_mesh(entry.path())) paths.push_back(entry.path());
     } else {
-      throw geometry::InputError(root.string(), "no such file or folder (--meshes)");
+      throw util::InputError(root.string(), "no such file or folder (--meshes)");
     }
   }
   std::sort(paths.begin(), paths.end());

@@ -14,7 +14,7 @@ struct MeshFile {
 };
 
 /// Files under `roots` (a file stands for itself, a folder is walked
-/// recursively), sorted by path, each once. Throws geometry::InputError for
+/// recursively), sorted by path, each once. Throws util::InputError for
 /// a root that does not exist.
 std::vector<MeshFile> find_mesh_files(const std::vector<std::filesystem::path>& roots);
 

@@ -18,7 +18,7 @@ std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& text) {
   unsigned long long i = 0, n = 0;
   char extra = 0;
   if (std::sscanf(text.c_str(), "%llu/%llu%c", &i, &n, &extra) != 2 || n == 0 || i >= n)
-    throw geometry::InputError("--shard", "'" + text + "' is not I/N with 0 <= I < N");
+    throw util::InputError("--shard", "'" + text + "' is not I/N with 0 <= I < N");
   return {i, n};
 }
 
@@ -74,7 +74,7 @@ int run_fuzz_real(const FuzzRealArgs& args) {
   for (const auto& m : args.meshes) options.roots.emplace_back(m);
   if (options.roots.empty()) options.roots = fuzz::default_mesh_roots();
   if (options.roots.empty())
-    throw geometry::InputError("--meshes",
+    throw util::InputError("--meshes",
                                "no mesh folder given and none of the default ones exists");
   options.seed = args.seed;
   options.per_mesh = args.per_mesh;

@@ -2,6 +2,7 @@
 #include <fuzz/mesh_catalog.h>
 #include <fuzz/real_scenes.h>
 #include <fuzz/real_sweep.h>
+#include <util/phase_clock.h>
 #include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
 #include <util/input_error.h>
@@ -16,12 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 std::string quoted(const fs::path& path) {
   const std::string s = path.string();
   return s.find_first_of(" '\"") == std::string::npos ? s : "'" + s + "'";
@@ -32,7 +27,7 @@ std::optional<geometry::Model> load_mesh(const MeshFile& file, std::string& reas
   geometry::PolygonSoup soup;
   try {
     soup = geometry::read_polygon_soup(file.path);
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     reason = e.what();
     return std::nullopt;
   } catch (const std::exception& e) {
@@ -96,14 +91,14 @@ fs::path export_failure(const GeneratedScene& g, const RealSceneResult& r, const
   for (std::size_t l = 0; l < r.placements.size(); ++l)
     recipe << "# light " << l << ": " << describe(r.placements[l]) << "\n";
   recipe.close();
-  if (!recipe) throw geometry::InputError((root / "recipe.txt").string(), "cannot write");
+  if (!recipe) throw util::InputError((root / "recipe.txt").string(), "cannot write");
   return root;
 }
 
 }  // namespace
 
 RealSweepSummary run_real_sweep(const RealSweepOptions& o) {
-  const auto start = Clock::now();
+  const auto start = util::Clock::now();
   RealSweepSummary s;
   const std::vector<MeshFile> all = find_mesh_files(o.roots);
   std::vector<MeshFile> files;
@@ -112,10 +107,10 @@ RealSweepSummary run_real_sweep(const RealSweepOptions& o) {
   s.files = files.size();
   for (std::size_t k = 0; k < files.size(); ++k) {
     const MeshFile& file = files[k];
-    const auto load_start = Clock::now();
+    const auto load_start = util::Clock::now();
     std::string reason;
     const std::optional<geometry::Model> mesh = load_mesh(file, reason);
-    s.seconds_load += since(load_start);
+    s.seconds_load += util::seconds_since(load_start);
     if (!mesh) {
       s.refused_meshes.emplace_back(file.path.string(), reason);
       continue;
@@ -152,7 +147,7 @@ RealSweepSummary run_real_sweep(const RealSweepOptions& o) {
       if (o.on_scene) o.on_scene(r);
     }
   }
-  s.seconds = since(start);
+  s.seconds = util::seconds_since(start);
   return s;
 }
 

@@ -53,7 +53,7 @@ void write_file(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   out.close();
-  if (!out) throw geometry::InputError(path.string(), "cannot write");
+  if (!out) throw util::InputError(path.string(), "cannot write");
 }
 
 bool same_bits(const geometry::Vec3& a, const geometry::Vec3& b) {
@@ -138,7 +138,7 @@ void export_scene(const GeneratedScene& generated, const TruthMasks& truth, cons
   const fs::path root = dir / generated.name;
   std::error_code ec;
   fs::create_directories(root / "meshes", ec);
-  if (ec) throw geometry::InputError((root / "meshes").string(), ec.message());
+  if (ec) throw util::InputError((root / "meshes").string(), ec.message());
 
   json doc = scene_header(scene);
   doc["models"] = json::array();

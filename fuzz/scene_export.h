@@ -30,7 +30,7 @@ std::string scene_to_json(const geometry::Scene& scene);
 /// (white lit, black shadowed, grey out of range, blue background),
 /// boundary.<i>.png (white on boundary samples) and truth.json (features and
 /// counts). Reads scene.json back and throws std::runtime_error unless every
-/// coordinate is bit-identical. Throws geometry::InputError if files cannot
+/// coordinate is bit-identical. Throws util::InputError if files cannot
 /// be written.
 void export_scene(const GeneratedScene& generated, const TruthMasks& truth,
                   const std::filesystem::path& dir);

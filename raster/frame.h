@@ -20,12 +20,12 @@ inline constexpr float kDepthBackground = std::numeric_limits<float>::infinity()
 struct Frame {
   int width = 0;
   int height = 0;
-  PixelPlane beauty;               ///< linear RGB, 3 floats a pixel
-  std::vector<PixelPlane> shadow;  ///< per light: kShadowLit / Shadowed / OutOfRange
-  std::vector<PixelPlane> count;   ///< per light: the final depth count
+  util::PixelPlane beauty;               ///< linear RGB, 3 floats a pixel
+  std::vector<util::PixelPlane> shadow;  ///< per light: kShadowLit / Shadowed / OutOfRange
+  std::vector<util::PixelPlane> count;   ///< per light: the final depth count
   /// Distance from the eye to the visible point along the sample ray
   /// (t·|d|); kDepthBackground where the ray hits nothing.
-  PixelPlane depth;
+  util::PixelPlane depth;
 
   Frame() = default;
   /// Every buffer filled with its background value. With 16 lights at

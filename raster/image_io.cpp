@@ -19,7 +19,7 @@
 
 namespace umbra::raster {
 
-using geometry::InputError;
+using util::InputError;
 namespace fs = std::filesystem;
 
 namespace {
@@ -54,7 +54,7 @@ ImageKind kind_of(const fs::path& path) {
   const std::string ext = lowercase(path.extension().string());
   if (ext == ".png") return ImageKind::png;
   if (ext == ".exr") return ImageKind::exr;
-  throw InputError(path.string(), fmt::format("unknown image extension '{}'; use .png or .exr",
+  throw util::InputError(path.string(), fmt::format("unknown image extension '{}'; use .png or .exr",
                                               path.extension().string()));
 }
 
@@ -101,9 +101,9 @@ void write_atomically(const fs::path& path, const OIIO::ImageSpec& spec, Write&&
   if (!error.empty()) {
     // OpenImageIO's messages may span lines; the CLI prints one line.
     error = error.substr(0, error.find('\n'));
-    throw InputError(path.string(), "cannot write image: " + error);
+    throw util::InputError(path.string(), "cannot write image: " + error);
   }
-  geometry::write_all_or_nothing(
+  util::write_all_or_nothing(
       path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
@@ -212,7 +212,7 @@ void write_frame(const Frame& frame, const fs::path& path) {
 }
 
 ShadowChannels read_shadow_channels(const fs::path& path) {
-  return decode_shadow_channels(geometry::read_input_file(path, "image"), path);
+  return decode_shadow_channels(util::read_input_file(path, "image"), path);
 }
 
 ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& name,
@@ -223,7 +223,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   const char* format = content_format(bytes);
   if (std::string_view(format) != "OpenEXR") {
     const bool named_exr = lowercase(name.extension().string()) == ".exr";
-    throw InputError(
+    throw util::InputError(
         where, fmt::format("is {} by its content{}; validate needs the shadow.0, shadow.1, ... "
                            "channels of an OpenEXR file from `umbra render -o NAME.exr`",
                            format, named_exr ? ", not the OpenEXR its name says" : ""));
@@ -234,7 +234,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   if (!in || !in->set_ioproxy(&memory) || !in->open(where, spec)) {
     std::string error = in ? in->geterror() : OIIO::geterror();
     error = error.substr(0, error.find('\n'));
-    throw InputError(
+    throw util::InputError(
         where, "cannot read image: " + (error.empty() ? std::string("unknown error") : error));
   }
   spec = in->spec();
@@ -247,23 +247,23 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
     if (index >= 0) by_light.emplace(index, c);
   }
   if (!by_light.contains(0))
-    throw InputError(where, "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
+    throw util::InputError(where, "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
   long expected = 0;
   for (const auto& [index, channel] : by_light) {
     if (index != expected)
-      throw InputError(where, fmt::format("has shadow.{} but no shadow.{}", index, expected));
+      throw util::InputError(where, fmt::format("has shadow.{} but no shadow.{}", index, expected));
     ++expected;
   }
 
   if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.deep)
-    throw InputError(where, fmt::format("unexpected image size {}x{}x{}{}", spec.width, spec.height,
+    throw util::InputError(where, fmt::format("unexpected image size {}x{}x{}{}", spec.width, spec.height,
                                         spec.depth, spec.deep ? " (deep)" : ""));
   // Pixel (i, j) of the file is compared with sample (i, j) of the scene's
   // camera: a data window moved off the display window (origin +5+5 or
   // -1-1) would compare every pixel with the wrong sample.
   if (spec.x != 0 || spec.y != 0 || spec.full_x != 0 || spec.full_y != 0 ||
       spec.full_width != spec.width || spec.full_height != spec.height)
-    throw InputError(
+    throw util::InputError(
         where,
         fmt::format("data window ({}, {}) to ({}, {}) is not the display window ({}, {}) "
                     "to ({}, {}); umbra render writes them equal, from (0, 0)",
@@ -272,7 +272,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
                     last_pixel(spec.full_y, spec.full_height)));
   const std::uint64_t n64 = static_cast<std::uint64_t>(spec.width) * spec.height;
   if (n64 > max_pixels)
-    throw InputError(where, fmt::format("{}x{} pixels is more than the {} pixels a render can have",
+    throw util::InputError(where, fmt::format("{}x{} pixels is more than the {} pixels a render can have",
                                         spec.width, spec.height, max_pixels));
   const std::size_t n = static_cast<std::size_t>(n64);
   const std::size_t width = static_cast<std::size_t>(spec.width);
@@ -280,7 +280,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   ShadowChannels result;
   result.width = spec.width;
   result.height = spec.height;
-  result.shadow.assign(by_light.size(), PixelPlane(n));
+  result.shadow.assign(by_light.size(), util::PixelPlane(n));
   // The shadow channels a block of rows at a time, so that other channels
   // (or however many) cost no memory. EXR sorts channels by name, so in
   // umbra's files they lie together and one read takes them all; a file
@@ -299,7 +299,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
     if (!in->read_scanlines(0, 0, y0, y1, 0, c0, c1, OIIO::TypeDesc::FLOAT, block.data())) {
       std::string error = in->geterror();
       error = error.substr(0, error.find('\n'));
-      throw InputError(where, "cannot read image: " + error);
+      throw util::InputError(where, "cannot read image: " + error);
     }
   };
   for (int y0 = 0; y0 < spec.height; y0 += rows) {
@@ -309,7 +309,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
     if (together) read(y0, y1, first, last + 1);
     std::size_t light = 0;
     for (const auto& [index, channel] : by_light) {
-      PixelPlane& plane = result.shadow[light++];
+      util::PixelPlane& plane = result.shadow[light++];
       if (!together) read(y0, y1, channel, channel + 1);
       const std::size_t c = together ? static_cast<std::size_t>(channel - first) : 0;
       for (std::size_t p = 0; p < pixels; ++p) plane[base + p] = block[p * channels_read + c];
@@ -320,7 +320,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
 
 void write_rgb_png(const fs::path& path, int width, int height, const std::vector<float>& rgb) {
   if (kind_of(path) != ImageKind::png)
-    throw InputError(path.string(), fmt::format("unknown image extension '{}'; use .png",
+    throw util::InputError(path.string(), fmt::format("unknown image extension '{}'; use .png",
                                                 path.extension().string()));
   if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * height * 3)
     throw std::invalid_argument(

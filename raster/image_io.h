@@ -13,7 +13,7 @@ namespace umbra::raster {
 /// (sRGB-encoded, 8 bits); `.exr` the beauty pass (R, G, B) and every AOV
 /// (`shadow.<i>`, `count.<i>`, `depth`) as float channels of one image.
 /// The file appears whole or not at all (written beside it, then renamed).
-/// Throws geometry::InputError naming the path on an unknown extension or a
+/// Throws util::InputError naming the path on an unknown extension or a
 /// write failure.
 void write_frame(const Frame& frame, const std::filesystem::path& path);
 
@@ -21,12 +21,12 @@ void write_frame(const Frame& frame, const std::filesystem::path& path);
 inline constexpr std::uint64_t kMaxImagePixels = 16384ull * 16384ull;
 
 /// The AOVs that validate needs, read back from an EXR written by write_frame
-/// (channels found by name). Throws geometry::InputError when the file cannot
+/// (channels found by name). Throws util::InputError when the file cannot
 /// be read or has no `shadow.0`.
 struct ShadowChannels {
   int width = 0;
   int height = 0;
-  std::vector<PixelPlane> shadow;  ///< shadow.0, shadow.1, ... in order
+  std::vector<util::PixelPlane> shadow;  ///< shadow.0, shadow.1, ... in order
 };
 ShadowChannels read_shadow_channels(const std::filesystem::path& path);
 
@@ -35,7 +35,7 @@ ShadowChannels read_shadow_channels(const std::filesystem::path& path);
 /// OpenEXR is refused, saying what it is. Also refused: a data window other
 /// than the display window at (0, 0), deep images, and more than
 /// `max_pixels` pixels (checked before any pixel is allocated).
-/// read_shadow_channels reads the file through geometry::read_input_file
+/// read_shadow_channels reads the file through util::read_input_file
 /// (regular files only, size limit) and calls this.
 ShadowChannels decode_shadow_channels(std::string_view bytes, const std::filesystem::path& name,
                                       std::uint64_t max_pixels = kMaxImagePixels);

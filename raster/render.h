@@ -58,7 +58,7 @@ struct RenderOptions {
   int spp = 1;
   /// Told the phase and fraction done while rendering, from any thread, at
   /// most ten times a second (util/progress.h); empty: nobody listens.
-  ProgressCallback progress{};
+  util::ProgressCallback progress{};
   ShadowMapOptions map{};  ///< Method::map only
   RayOptions ray{};        ///< Method::ray only
 };

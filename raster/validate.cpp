@@ -69,20 +69,20 @@ namespace {
 void check_fits(const std::string& where, int width, int height, std::size_t lights,
                 const ShadowChannels& image) {
   if (image.width != width || image.height != height) {
-    throw geometry::InputError(where, "the image is " + std::to_string(image.width) + "x" +
+    throw util::InputError(where, "the image is " + std::to_string(image.width) + "x" +
                                           std::to_string(image.height) +
                                           " but the scene's camera renders " +
                                           std::to_string(width) + "x" + std::to_string(height));
   }
   if (image.shadow.size() != lights) {
-    throw geometry::InputError(where, "the image has " + std::to_string(image.shadow.size()) +
+    throw util::InputError(where, "the image has " + std::to_string(image.shadow.size()) +
                                           " shadow channels but the scene has " +
                                           std::to_string(lights) + " lights");
   }
   const std::size_t total = static_cast<std::size_t>(width) * height;
   for (const auto& channel : image.shadow) {
     if (channel.size() != total)
-      throw geometry::InputError(where, "a shadow channel does not hold one value a pixel");
+      throw util::InputError(where, "a shadow channel does not hold one value a pixel");
   }
 }
 
@@ -104,9 +104,9 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
   // Chunks of the pixel list go to threads; each writes its own entries.
   constexpr int kChunk = 256;
   const int chunks = static_cast<int>((truth.pixels.size() + kChunk - 1) / kChunk);
-  Progress progress(options.progress);
+  util::Progress progress(options.progress);
   progress.phase("validate", static_cast<std::uint64_t>(chunks));
-  parallel_rows(chunks, options.threads, [&](int c) {
+  util::parallel_rows(chunks, options.threads, [&](int c) {
     const std::size_t end = std::min(truth.pixels.size(), static_cast<std::size_t>(c + 1) * kChunk);
     for (std::size_t k = static_cast<std::size_t>(c) * kChunk; k < end; ++k) {
       const std::size_t p = truth.pixels[k];

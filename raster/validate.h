@@ -17,7 +17,7 @@ struct ValidateOptions {
   std::optional<std::uint64_t> samples;
   std::uint64_t seed = 1;
   unsigned threads = 0;
-  ProgressCallback progress{};  ///< told the fraction of pixels checked
+  util::ProgressCallback progress{};  ///< told the fraction of pixels checked
 };
 
 struct LightReport {
@@ -64,12 +64,12 @@ struct OracleTruth {
 
 OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& options);
 
-/// Scores `image` against `truth`. Throws geometry::InputError when the image
+/// Scores `image` against `truth`. Throws util::InputError when the image
 /// does not fit (size, number of shadow channels); `where` names the scene.
 ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& image,
                               const std::string& where = "validate");
 
-/// oracle_truth then score_render. Throws geometry::InputError when the image
+/// oracle_truth then score_render. Throws util::InputError when the image
 /// does not fit the scene (size, number of shadow channels).
 ValidationReport validate_render(const geometry::Scene& scene, const ShadowChannels& image,
                                  const ValidateOptions& options);

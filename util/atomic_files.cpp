@@ -10,7 +10,7 @@
 #include <memory>
 #include <random>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 namespace fs = std::filesystem;
 
@@ -96,4 +96,4 @@ void write_all_or_nothing(const fs::path& path, std::string_view bytes) {
   write_files({{path, bytes}});
 }
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

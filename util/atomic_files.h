@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 /// `.NAME.tmp-XXXXXXXXXXXXXXXX.EXT` beside `path`: same directory, so the
 /// rename is atomic on one file system; same extension, so format-sniffing
@@ -28,4 +28,4 @@ void write_all_or_nothing(const std::vector<std::pair<std::filesystem::path, std
 /// The same for one file whose bytes are held elsewhere (an encoded image).
 void write_all_or_nothing(const std::filesystem::path& path, std::string_view bytes);
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

@@ -8,7 +8,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace umbra::raster {
+namespace umbra::util {
 
 namespace {
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
@@ -48,4 +48,4 @@ void unmap_huge_pages(void* block, std::size_t) noexcept { std::free(block); }
 
 #endif
 
-}  // namespace umbra::raster
+}  // namespace umbra::util

@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-namespace umbra::raster {
+namespace umbra::util {
 
 /// A block is rounded up to whole huge pages: from 2 MiB on that wastes less
 /// than half of it (a 1280x720 float plane, 3.7 MB, takes 4 MiB).
@@ -66,4 +66,4 @@ void reserve_huge(HugeVector<T>& v, std::size_t n) {
   v.reserve(n > one_page ? n : one_page);
 }
 
-}  // namespace umbra::raster
+}  // namespace umbra::util

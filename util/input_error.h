@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 class InputError : public std::runtime_error {
  public:
@@ -15,4 +15,4 @@ class InputError : public std::runtime_error {
       : std::runtime_error(where + ": " + what) {}
 };
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

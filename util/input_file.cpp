@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 namespace {
 
@@ -78,4 +78,4 @@ std::string read_input_file(const std::filesystem::path& file, std::string_view 
   return bytes;
 }
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

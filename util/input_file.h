@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 /// The largest file umbra reads: 4 GiB - 1, the largest a GLB container (and
 /// tinygltf, which counts in 32 bits) can describe. Larger files are refused
@@ -26,4 +26,4 @@ inline constexpr std::uint64_t kMaxInputFileBytes = 0xFFFFFFFFull;
 std::string read_input_file(const std::filesystem::path& file, std::string_view what,
                             std::uint64_t max_bytes = kMaxInputFileBytes);
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 /// 0 means every hardware thread.
 inline unsigned resolve_threads(unsigned threads) {
@@ -48,4 +48,4 @@ void parallel_for(std::size_t count, unsigned threads, Item&& item) {
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

@@ -5,18 +5,17 @@
 
 #include <cstddef>
 
-namespace umbra::raster {
+namespace umbra::util {
 
 /// 0 means every hardware thread.
-using geometry::resolve_threads;
 
 /// Calls row(j) once for every j in [0, height) from up to `threads`
 /// threads; the first exception thrown is rethrown here after all stop.
 template <class Row>
 void parallel_rows(int height, unsigned threads, Row&& row) {
   if (height <= 0) return;
-  geometry::parallel_for(static_cast<std::size_t>(height), threads,
+  parallel_for(static_cast<std::size_t>(height), threads,
                          [&](std::size_t j) { row(static_cast<int>(j)); });
 }
 
-}  // namespace umbra::raster
+}  // namespace umbra::util

@@ -1,9 +1,9 @@
 #pragma once
-// Seconds spent in a render phase, for RenderStats: every method times its
-// phases the same way.
+// Seconds spent in a phase (of a render, a verb, a sweep): every timing that
+// umbra reports is taken the same way, on the steady clock.
 #include <chrono>
 
-namespace umbra::raster {
+namespace umbra::util {
 
 using Clock = std::chrono::steady_clock;
 
@@ -11,4 +11,4 @@ inline double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-}  // namespace umbra::raster
+}  // namespace umbra::util

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace umbra::raster {
+namespace umbra::util {
 
 /// Called with the phase's name and the fraction of it done, in [0, 1].
 using ProgressCallback = std::function<void(std::string_view phase, double fraction)>;
@@ -49,4 +49,4 @@ class Progress {
   std::chrono::steady_clock::time_point last_;
 };
 
-}  // namespace umbra::raster
+}  // namespace umbra::util

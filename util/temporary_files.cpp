@@ -6,7 +6,7 @@
 #include <csignal>
 #include <cstring>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 namespace {
 
@@ -67,4 +67,4 @@ TemporaryFileGuard::~TemporaryFileGuard() {
     g_slots[static_cast<std::size_t>(slot_)].state.store(kFree, std::memory_order_release);
 }
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

@@ -6,7 +6,7 @@
 // reads without locks, and it removes them with unlink(2).
 #include <filesystem>
 
-namespace umbra::geometry {
+namespace umbra::util {
 
 /// Installs the handler for SIGINT, SIGTERM and SIGHUP: it unlinks every
 /// registered temporary, restores the default action and raises the
@@ -32,4 +32,4 @@ class TemporaryFileGuard {
   int slot_ = -1;
 };
 
-}  // namespace umbra::geometry
+}  // namespace umbra::util

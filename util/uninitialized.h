@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace umbra::raster {
+namespace umbra::util {
 
 template <class T, class Base = HugePageAllocator<T>>
 class DefaultInitAllocator : public Base {
@@ -43,4 +43,4 @@ class DefaultInitAllocator : public Base {
 template <class T>
 using UninitializedVector = std::vector<T, DefaultInitAllocator<T>>;
 
-}  // namespace umbra::raster
+}  // namespace umbra::util

@@ -8,8 +8,8 @@
 // the face is fan-triangulated on them. Any glTF reader that exposes custom
 // attributes (tinygltf, three.js, Blender) gets them per triangle; readers
 // that drop them (assimp 5.2) still get the triangles and the node extras.
-#include <util/input_error.h>
 #include <geometry/export/gltf_writer.h>
+#include <util/input_error.h>
 
 #include <algorithm>
 #include <array>
@@ -34,8 +34,8 @@ constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 
 /// Attribute names in the file, in the order docs/volume-export.md lists them.
-constexpr std::array<const char*, 8> kAttributes{"_FACE", "_LIGHT",  "_MODEL", "_POLYGON",
-                                                 "_EDGE", "_TYPE",   "_NB_C",  "_TWISTED"};
+constexpr std::array<const char*, 8> kAttributes{"_FACE", "_LIGHT", "_MODEL", "_POLYGON",
+                                                 "_EDGE", "_TYPE",  "_NB_C",  "_TWISTED"};
 
 template <class T>
 void append_le(std::string& out, T value) {
@@ -55,8 +55,7 @@ std::string base64(const std::string& in) {
     std::uint32_t bits = 0;
     for (std::size_t k = 0; k < 3; ++k)
       bits = (bits << 8) | (k < n ? static_cast<std::uint8_t>(in[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k)
-      out += k <= n ? kTable[(bits >> (18 - 6 * k)) & 63] : '=';
+    for (std::size_t k = 0; k < 4; ++k) out += k <= n ? kTable[(bits >> (18 - 6 * k)) & 63] : '=';
   }
   return out;
 }
@@ -78,23 +77,23 @@ class GltfWriter {
     for (const std::size_t f : faces) {
       const ShadowPolygon& p = volumes.polygons[f];
       const std::array<double, kAttributes.size()> values{
-          static_cast<double>(f), static_cast<double>(p.light),   static_cast<double>(p.model),
-          static_cast<double>(p.polygon), static_cast<double>(p.edge),
-          static_cast<double>(p.type),    static_cast<double>(p.nb_c),
-          p.twisted ? 1.0 : 0.0};
+          static_cast<double>(f),       static_cast<double>(p.light),
+          static_cast<double>(p.model), static_cast<double>(p.polygon),
+          static_cast<double>(p.edge),  static_cast<double>(p.type),
+          static_cast<double>(p.nb_c),  p.twisted ? 1.0 : 0.0};
       for (std::size_t a = 0; a < values.size(); ++a)
         if (std::abs(values[a]) > 16777216.0)
-          throw InputError(name_, std::string("attribute ") + kAttributes[a] + " of face " +
-                                      std::to_string(f) +
-                                      " exceeds 2^24 and is not exact in a glTF float; use .ply");
+          throw util::InputError(
+              name_, std::string("attribute ") + kAttributes[a] + " of face " + std::to_string(f) +
+                         " exceeds 2^24 and is not exact in a glTF float; use .ply");
       const auto base = static_cast<std::uint32_t>(positions.size() / 3);
       for (const Vec3& v : p.vertices) {
         const std::array<double, 3> c{v.x, v.y, v.z};
         for (std::size_t k = 0; k < 3; ++k) {
           const auto x = static_cast<float>(c[k]);  // round to nearest float
           if (!std::isfinite(x))
-            throw InputError(name_, "a vertex of face " + std::to_string(f) +
-                                        " does not fit a float32 glTF position; use .ply");
+            throw util::InputError(name_, "a vertex of face " + std::to_string(f) +
+                                              " does not fit a float32 glTF position; use .ply");
           positions.push_back(x);
           lo[k] = std::min(lo[k], x);
           hi[k] = std::max(hi[k], x);
@@ -110,9 +109,8 @@ class GltfWriter {
     }
     const std::size_t vertex_count = positions.size() / 3;
     Json prim = {{"mode", 4}};
-    prim["attributes"]["POSITION"] =
-        accessor(floats_view(positions), kFloat, vertex_count, "VEC3", {lo[0], lo[1], lo[2]},
-                 {hi[0], hi[1], hi[2]});
+    prim["attributes"]["POSITION"] = accessor(floats_view(positions), kFloat, vertex_count, "VEC3",
+                                              {lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]});
     for (std::size_t a = 0; a < kAttributes.size(); ++a) {
       const auto [mn, mx] = std::minmax_element(attributes[a].begin(), attributes[a].end());
       prim["attributes"][kAttributes[a]] =
@@ -176,7 +174,7 @@ class GltfWriter {
     while (body.size() % 4 != 0) body += '\0';
     const std::uint64_t total = 12 + 8 + json.size() + (body.empty() ? 0 : 8 + body.size());
     if (total > std::numeric_limits<std::uint32_t>::max())
-      throw InputError(name_, "the volume needs more than 4 GiB, more than a GLB can hold");
+      throw util::InputError(name_, "the volume needs more than 4 GiB, more than a GLB can hold");
     std::string out = "glTF";
     append_le(out, std::uint32_t{2});
     append_le(out, static_cast<std::uint32_t>(total));
@@ -194,8 +192,10 @@ class GltfWriter {
  private:
   std::size_t view(const std::string& data, int target) {
     while (bin_.size() % 4 != 0) bin_ += '\0';
-    views_.push_back(
-        {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", data.size()}, {"target", target}});
+    views_.push_back({{"buffer", 0},
+                      {"byteOffset", bin_.size()},
+                      {"byteLength", data.size()},
+                      {"target", target}});
     bin_ += data;
     return views_.size() - 1;
   }
@@ -207,8 +207,8 @@ class GltfWriter {
   }
   std::size_t accessor(std::size_t view_index, int component, std::size_t count, const char* type,
                        const Json& min, const Json& max) {
-    Json a = {{"bufferView", view_index}, {"componentType", component}, {"count", count},
-              {"type", type}};
+    Json a = {
+        {"bufferView", view_index}, {"componentType", component}, {"count", count}, {"type", type}};
     if (!min.is_null()) a["min"] = min;
     if (!max.is_null()) a["max"] = max;
     accessors_.push_back(std::move(a));

@@ -1,6 +1,6 @@
 #include <geometry/io/gltf_json_checks.h>
-#include <util/input_error.h>
 #include <geometry/io/json_depth.h>
+#include <util/input_error.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +46,7 @@ class Checker {
   Checker(const std::string& name, const fs::path& folder) : name_(name), folder_(folder) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw InputError(name_ + ": " + path, what);
+    throw util::InputError(name_ + ": " + path, what);
   }
 
   void check(const Json& doc) const {
@@ -198,9 +198,9 @@ fs::path gltf_folder(const fs::path& file) {
 
 void check_gltf_json(std::string_view json, const std::string& name, const fs::path& folder) {
   if (const std::size_t depth = json_nesting_depth(json); depth > kMaxGltfNesting)
-    throw InputError(name, "JSON nesting too deep: " + std::to_string(depth) +
-                               " levels; umbra reads glTF files of at most " +
-                               std::to_string(kMaxGltfNesting));
+    throw util::InputError(name, "JSON nesting too deep: " + std::to_string(depth) +
+                                     " levels; umbra reads glTF files of at most " +
+                                     std::to_string(kMaxGltfNesting));
   const Json doc = Json::parse(json, nullptr, /*allow_exceptions=*/false);
   if (doc.is_discarded()) return;  // tinygltf reports the syntax error
   Checker(name, folder).check(doc);

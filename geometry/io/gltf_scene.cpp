@@ -1,27 +1,21 @@
-// glTF 2.0 scenes and meshes (docs/scene-format.md, "glTF scenes").
-//
-// tinygltf parses the JSON (or the GLB container) and loads the buffers; it
-// checks the shape of the document but not what the indices point to, nor
-// that an accessor fits its buffer view. Everything umbra reads is checked
-// here once, before it is used, and reported with the glTF JSON path
-// ("accessors[3]", "meshes[0].primitives[1].indices", "nodes[2].rotation"),
-// so that no malformed file can crash the reader or reach the geometry.
+// glTF 2.0 scenes and meshes (docs/scene-format.md, "glTF scenes"): what a
+// checked glTF document (gltf_document.h) means to umbra. The default
+// scene's nodes are walked once per question (meshes, lights, camera), every
+// field umbra reads is checked where it is read and reported with its glTF
+// JSON path ("nodes[2].rotation").
 //
 // Numbers: tinygltf keeps JSON numbers as doubles, so matrices, TRS values,
-// camera and light parameters are the doubles their text denotes; float32
-// positions from buffers widen exactly to double. Node transforms are
-// composed and applied in doubles in the documented order (no FMA: the build
-// uses -ffp-contract=off).
+// camera and light parameters are the doubles their text denotes. Node
+// transforms are composed and applied in doubles in the documented order (no
+// FMA: the build uses -ffp-contract=off).
 #include <geometry/exact/coordinate_range.h>
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/gltf_json_checks.h>
+#include <geometry/io/gltf_document.h>
+#include <geometry/io/gltf_lights_camera.h>
 #include <geometry/io/gltf_matrix.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
+#include <geometry/io/gltf_scene.h>
 #include <geometry/io/mesh_lexer.h>
 #include <geometry/io/position_welder.h>
 #include <geometry/sample_ray.h>
-#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <array>
@@ -48,6 +42,7 @@ namespace fs = std::filesystem;
 namespace {
 
 using gltf::at;
+using gltf::item;
 using gltf::kIdentity;
 using gltf::Matrix;
 using gltf::mirrors;
@@ -55,60 +50,14 @@ using gltf::multiply;
 using gltf::transform_direction;
 using gltf::transform_point;
 
-template <class T>
-T load_le(const unsigned char* p) {
-  std::array<unsigned char, sizeof(T)> bytes;
-  std::memcpy(bytes.data(), p, sizeof(T));
-  if constexpr (std::endian::native == std::endian::big) std::reverse(bytes.begin(), bytes.end());
-  T value;
-  std::memcpy(&value, bytes.data(), sizeof(T));
-  return value;
-}
-
-std::string item(const std::string& path, std::size_t index) {
-  return path + "[" + std::to_string(index) + "]";
-}
-
-/// The elements of one accessor, checked to lie inside its buffer view and
-/// buffer. `base` is null for an accessor without a buffer view (all zeros).
-struct AccessorData {
-  const unsigned char* base = nullptr;
-  std::size_t stride = 0;
-  std::size_t count = 0;
-  int component_type = 0;
-  std::string path;  ///< "accessors[i]"
-};
-
-std::size_t component_size(int type) {
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
-/// The glTF file in tinygltf's form plus umbra's checks of it.
-class GltfReader {
+/// The scene a glTF document describes, read as umbra's Scene needs it.
+class SceneReader {
  public:
-  GltfReader(std::string_view bytes, const fs::path& file) : file_(file), name_(file.string()) {
-    parse(bytes);
-    check_required_extensions();
-  }
+  explicit SceneReader(const gltf::Document& doc) : doc_(doc), model_(doc.model()) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw InputError(path.empty() ? name_ : name_ + ": " + path, what);
+    doc_.fail(path, what);
   }
-
-  /// The external files (buffers, images) read while parsing.
-  const std::vector<fs::path>& externals() const { return externals_; }
 
   /// One instance of a mesh primitive with triangles: its triangles in world
   /// coordinates (welded within `soup`), and the primitive's color.
@@ -134,7 +83,7 @@ class GltfReader {
     while (!stack.empty()) {
       const Entry entry = std::move(stack.back());
       stack.pop_back();
-      const std::size_t index = node_index(entry.node, entry.path);
+      const std::size_t index = doc_.node_index(entry.node, entry.path);
       if (seen[index])
         fail(entry.path, "node " + std::to_string(index) +
                              " is reached twice in the scene (a node has at most one parent "
@@ -195,7 +144,7 @@ class GltfReader {
     for (const auto& [index, world] : placed) {
       const tinygltf::Camera& gltf = model_.cameras[index];
       if (gltf.type != "perspective") continue;
-      return make_camera(gltf, item("cameras", index), world);
+      return make_camera(doc_, gltf, item("cameras", index), world);
     }
     fail("cameras",
          "no node of the scene instances a perspective camera; umbra renders through "
@@ -214,7 +163,7 @@ class GltfReader {
     const tinygltf::Value& array = root.Get("lights");
     if (!array.IsArray()) fail(lights_path, "expected an array");
     for (std::size_t i = 0; i < array.ArrayLen(); ++i)
-      lights.push_back(read_light(array.Get(static_cast<int>(i)), item(lights_path, i)));
+      lights.push_back(read_light(doc_, array.Get(static_cast<int>(i)), item(lights_path, i)));
 
     // Place every light: each must be instanced by exactly one node, because
     // its index in `lights` is its AOV index (shadow.<i>) and one AOV holds
@@ -261,120 +210,6 @@ class GltfReader {
   }
 
  private:
-  void parse(std::string_view bytes) {
-    tinygltf::TinyGLTF loader;
-    // Images are never needed: accept them unread.
-    loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                             const unsigned char*, int, void*) { return true; },
-                          nullptr);
-    // Plain file access: no shell-style path expansion, and external files
-    // only from the glTF file's own folder (tinygltf would also try the
-    // current directory), links resolved, regular files only.
-    std::error_code ec;
-    base_dir_ = fs::absolute(file_, ec).parent_path().string();
-    folder_ = gltf_folder(file_);
-    loader.SetFsCallbacks({&GltfReader::file_exists, &GltfReader::expand_path,
-                           &GltfReader::read_whole_file, &tinygltf::WriteWholeFile, this});
-    std::string err, warn;
-    bool ok = false;
-    const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
-    if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("", "file too large");
-    if (binary) {
-      check_glb_container(bytes);
-      check_gltf_json(
-          bytes.substr(20, load_le<std::uint32_t>(
-                               reinterpret_cast<const unsigned char*>(bytes.data()) + 12)),
-          name_, folder_);
-      ok = loader.LoadBinaryFromMemory(&model_, &err, &warn,
-                                       reinterpret_cast<const unsigned char*>(bytes.data()),
-                                       static_cast<unsigned int>(bytes.size()), base_dir_);
-    } else {
-      check_gltf_json(bytes, name_, folder_);
-      ok = loader.LoadASCIIFromString(&model_, &err, &warn, bytes.data(),
-                                      static_cast<unsigned int>(bytes.size()), base_dir_);
-    }
-    if (!ok) {
-      // tinygltf's messages are lines; keep them on one line.
-      std::string what;
-      for (char c : err) {
-        if (c == '\n') {
-          if (!what.empty() && what.back() != ' ') what += "; ";
-        } else {
-          what += c;
-        }
-      }
-      while (!what.empty() && (what.back() == ' ' || what.back() == ';')) what.pop_back();
-      fail("", "invalid glTF: " + (what.empty() ? std::string("tinygltf refused the file") : what));
-    }
-  }
-
-  // The last guard of docs/security.md's path rule (check_gltf_json names
-  // the URI first): tinygltf tries the folder and then the current
-  // directory; only a candidate under the folder whose target, links
-  // resolved, is inside the folder counts as existing.
-  static bool file_exists(const std::string& path, void* self) {
-    const auto* reader = static_cast<const GltfReader*>(self);
-    if (path.rfind(reader->base_dir_, 0) != 0) return false;
-    fs::path resolved;
-    std::error_code ec;
-    return resolves_inside(path, reader->folder_, resolved) && fs::is_regular_file(resolved, ec);
-  }
-  static bool read_whole_file(std::vector<unsigned char>* out, std::string* err,
-                              const std::string& path, void* self) {
-    const auto* reader = static_cast<const GltfReader*>(self);
-    fs::path resolved;
-    if (!resolves_inside(path, reader->folder_, resolved)) {
-      if (err) *err += "'" + path + "' is outside the glTF file's folder\n";
-      return false;
-    }
-    try {
-      const std::string bytes = read_input_file(resolved, "glTF external");
-      out->assign(bytes.begin(), bytes.end());
-      reader->externals_.push_back(path);
-      return true;
-    } catch (const InputError& e) {
-      if (err) *err += std::string(e.what()) + "\n";
-      return false;
-    }
-  }
-  static std::string expand_path(const std::string& path, void*) { return path; }
-
-  /// The GLB header and chunk headers, checked before tinygltf reads them.
-  void check_glb_container(std::string_view bytes) const {
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-    if (bytes.size() < 20)
-      fail("", "GLB file too short for its header: " + std::to_string(bytes.size()) + " bytes");
-    const auto version = load_le<std::uint32_t>(data + 4);
-    const auto length = load_le<std::uint32_t>(data + 8);
-    if (version != 2) fail("", "GLB version " + std::to_string(version) + "; expected 2");
-    if (length > bytes.size())
-      fail("", "GLB header length " + std::to_string(length) + " exceeds the file's " +
-                   std::to_string(bytes.size()) + " bytes (truncated file?)");
-    const auto json_length = load_le<std::uint32_t>(data + 12);
-    if (load_le<std::uint32_t>(data + 16) != 0x4E4F534Au)
-      fail("", "GLB: the first chunk is not JSON");
-    if (std::uint64_t{json_length} + 20 > length)
-      fail("", "GLB: the JSON chunk (" + std::to_string(json_length) +
-                   " bytes) runs past the end of the file");
-    const std::uint64_t bin_start = 20 + ((std::uint64_t{json_length} + 3) / 4) * 4;
-    if (bin_start < length) {
-      if (bin_start + 8 > length) fail("", "GLB: truncated chunk header after the JSON chunk");
-      const auto bin_length = load_le<std::uint32_t>(data + bin_start);
-      if (bin_start + 8 + bin_length > length)
-        fail("", "GLB: the BIN chunk (" + std::to_string(bin_length) +
-                     " bytes) runs past the end of the file");
-    }
-  }
-
-  void check_required_extensions() const {
-    for (std::size_t i = 0; i < model_.extensionsRequired.size(); ++i) {
-      const std::string& name = model_.extensionsRequired[i];
-      if (name != "KHR_lights_punctual")
-        fail(item("extensionsRequired", i),
-             "required extension '" + name + "' is not supported by umbra");
-    }
-  }
-
   /// The root nodes and where they are listed ("scenes[0].nodes"; "roots"
   /// for a file without scenes, whose roots are the nodes nobody parents).
   struct Roots {
@@ -396,24 +231,12 @@ class GltfReader {
     std::vector<bool> is_child(model_.nodes.size(), false);
     for (std::size_t n = 0; n < model_.nodes.size(); ++n)
       for (std::size_t c = 0; c < model_.nodes[n].children.size(); ++c)
-        is_child[node_index(model_.nodes[n].children[c], item(item("nodes", n) + ".children", c))] =
-            true;
+        is_child[doc_.node_index(model_.nodes[n].children[c],
+                                 item(item("nodes", n) + ".children", c))] = true;
     Roots roots{{}, "roots"};
     for (std::size_t n = 0; n < model_.nodes.size(); ++n)
       if (!is_child[n]) roots.nodes.push_back(static_cast<int>(n));
     return roots;
-  }
-
-  std::size_t node_index(int index, const std::string& path) const {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
-      fail(path, "node " + std::to_string(index) +
-                     " out of range: " + std::to_string(model_.nodes.size()) + " nodes");
-    return static_cast<std::size_t>(index);
-  }
-
-  void check_finite(const std::vector<double>& values, const std::string& path) const {
-    for (std::size_t i = 0; i < values.size(); ++i)
-      if (!std::isfinite(values[i])) fail(item(path, i), "number is not finite");
   }
 
   /// The node's local matrix: `matrix` as given, or T·R·S.
@@ -422,7 +245,7 @@ class GltfReader {
       if (!v.empty() && v.size() != n)
         fail(path + "." + field,
              "expected " + std::to_string(n) + " numbers, found " + std::to_string(v.size()));
-      check_finite(v, path + "." + field);
+      doc_.check_finite(v, path + "." + field);
     };
     check_size(node.matrix, "matrix", 16);
     check_size(node.translation, "translation", 3);
@@ -473,110 +296,6 @@ class GltfReader {
     return m;
   }
 
-  /// Checks accessor `index` (read at `path`) against its buffer view and
-  /// buffer, and that its element type is `type` of one of `components`.
-  AccessorData accessor(int index, const std::string& path, int type,
-                        std::initializer_list<int> components, const char* expected) const {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
-      fail(path, "accessor " + std::to_string(index) +
-                     " out of range: " + std::to_string(model_.accessors.size()) + " accessors");
-    const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];
-    AccessorData data;
-    data.path = item("accessors", static_cast<std::size_t>(index));
-    if (a.sparse.isSparse) fail(data.path + ".sparse", "sparse accessors are not supported");
-    if (a.type != type ||
-        std::find(components.begin(), components.end(), a.componentType) == components.end())
-      fail(data.path, std::string("expected ") + expected + " (read as " + path + ")");
-    if (a.normalized) fail(data.path + ".normalized", std::string("expected ") + expected);
-    if (a.count == 0) fail(data.path + ".count", "must be at least 1");
-    data.count = a.count;
-    data.component_type = a.componentType;
-    const std::size_t element = component_size(a.componentType) *
-                                static_cast<std::size_t>(type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
-    if (a.bufferView < 0) return data;  // no buffer view: every element is zero
-    if (static_cast<std::size_t>(a.bufferView) >= model_.bufferViews.size())
-      fail(data.path + ".bufferView",
-           "buffer view " + std::to_string(a.bufferView) +
-               " out of range: " + std::to_string(model_.bufferViews.size()) + " buffer views");
-    const std::string view_path = item("bufferViews", static_cast<std::size_t>(a.bufferView));
-    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(a.bufferView)];
-    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size())
-      fail(view_path + ".buffer", "buffer " + std::to_string(view.buffer) + " out of range: " +
-                                      std::to_string(model_.buffers.size()) + " buffers");
-    const std::vector<unsigned char>& buffer =
-        model_.buffers[static_cast<std::size_t>(view.buffer)].data;
-    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
-      fail(view_path, "byteOffset " + std::to_string(view.byteOffset) + " + byteLength " +
-                          std::to_string(view.byteLength) + " runs past the end of buffer " +
-                          std::to_string(view.buffer) + " (" + std::to_string(buffer.size()) +
-                          " bytes)");
-    data.stride = view.byteStride == 0 ? element : view.byteStride;
-    if (data.stride < element)
-      fail(view_path + ".byteStride", "byteStride " + std::to_string(view.byteStride) +
-                                          " is smaller than one element (" +
-                                          std::to_string(element) + " bytes)");
-    // offset + stride·(count - 1) + element <= byteLength, without overflow.
-    const std::size_t room = view.byteLength;
-    const bool fits = a.byteOffset <= room && element <= room - a.byteOffset &&
-                      (a.count - 1) <= (room - a.byteOffset - element) / data.stride;
-    if (!fits)
-      fail(data.path, std::to_string(a.count) + " elements from byteOffset " +
-                          std::to_string(a.byteOffset) + " run past the end of " + view_path +
-                          " (" + std::to_string(view.byteLength) + " bytes)");
-    data.base = buffer.data() + view.byteOffset + a.byteOffset;
-    return data;
-  }
-
-  std::vector<Vec3> positions(int index, const std::string& path) const {
-    const AccessorData data = accessor(index, path, TINYGLTF_TYPE_VEC3,
-                                       {TINYGLTF_COMPONENT_TYPE_FLOAT}, "a float VEC3 accessor");
-    std::vector<Vec3> out(data.count);
-    if (data.base == nullptr) return out;
-    for (std::size_t i = 0; i < data.count; ++i) {
-      const unsigned char* p = data.base + i * data.stride;
-      std::array<double, 3> c{};
-      for (std::size_t k = 0; k < 3; ++k) {
-        c[k] = static_cast<double>(load_le<float>(p + 4 * k));  // float → double is exact
-        if (!std::isfinite(c[k]))
-          fail(data.path, "element " + std::to_string(i) + " component " + std::to_string(k) +
-                              " is " + (std::isnan(c[k]) ? "NaN" : "infinite") + " (read as " +
-                              path + ")");
-      }
-      out[i] = {c[0], c[1], c[2]};
-    }
-    return out;
-  }
-
-  std::vector<std::uint32_t> indices(int index, const std::string& path,
-                                     std::size_t vertex_count) const {
-    const AccessorData data =
-        accessor(index, path, TINYGLTF_TYPE_SCALAR,
-                 {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-                 "an unsigned byte, unsigned short or unsigned int SCALAR accessor");
-    std::vector<std::uint32_t> out(data.count, 0);
-    for (std::size_t i = 0; data.base != nullptr && i < data.count; ++i) {
-      const unsigned char* p = data.base + i * data.stride;
-      switch (data.component_type) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-          out[i] = *p;
-          break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-          out[i] = load_le<std::uint16_t>(p);
-          break;
-        default:
-          out[i] = load_le<std::uint32_t>(p);
-          break;
-      }
-    }
-    for (std::size_t i = 0; i < out.size(); ++i)
-      if (out[i] >= vertex_count)
-        fail(data.path, "index " + std::to_string(out[i]) + " at element " + std::to_string(i) +
-                            " out of range: POSITION has " + std::to_string(vertex_count) +
-                            " vertices (read as " + path + ")");
-    return out;
-  }
-
   /// The primitive's triangles in world coordinates, or nothing for points
   /// and lines (which have no surface to hit or to cast a shadow).
   std::optional<PolygonSoup> triangles(const tinygltf::Primitive& prim, const std::string& path,
@@ -591,10 +310,10 @@ class GltfReader {
     const auto position = prim.attributes.find("POSITION");
     if (position == prim.attributes.end())
       fail(path + ".attributes", "missing required attribute 'POSITION'");
-    const std::vector<Vec3> local = positions(position->second, path + ".attributes.POSITION");
+    const std::vector<Vec3> local = doc_.positions(position->second, path + ".attributes.POSITION");
     std::vector<std::uint32_t> order;
     if (prim.indices >= 0) {
-      order = indices(prim.indices, path + ".indices", local.size());
+      order = doc_.indices(prim.indices, path + ".indices", local.size());
     } else {
       order.resize(local.size());
       for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
@@ -659,143 +378,8 @@ class GltfReader {
     return {f[0], f[1], f[2]};
   }
 
-  /// A number field of a tinygltf Value, or `fallback` when absent.
-  double number(const tinygltf::Value& object, const char* key, const std::string& path,
-                double fallback) const {
-    if (!object.Has(key)) return fallback;
-    const tinygltf::Value& v = object.Get(key);
-    if (!v.IsNumber()) fail(path + "." + key, "expected a number");
-    const double d = v.GetNumberAsDouble();
-    if (!std::isfinite(d)) fail(path + "." + key, "number is not finite");
-    return d;
-  }
-
-  Light read_light(const tinygltf::Value& v, const std::string& path) const {
-    if (!v.IsObject()) fail(path, "expected an object");
-    if (!v.Has("type") || !v.Get("type").IsString())
-      fail(path + ".type", "missing or not a string");
-    const std::string type = v.Get("type").Get<std::string>();
-    Light light;
-    if (type == "point") {
-      light.type = LightType::point;
-    } else if (type == "directional") {
-      light.type = LightType::directional;
-    } else if (type == "spot") {
-      fail(path + ".type",
-           "spot lights are not supported (umbra's lights are point and "
-           "directional; a spot's cone would change the shadows)");
-    } else {
-      fail(path + ".type", "unknown light type '" + type + "'; expected point or directional");
-    }
-    Rgb color{1, 1, 1};
-    if (v.Has("color")) {
-      const tinygltf::Value& c = v.Get("color");
-      if (!c.IsArray() || c.ArrayLen() != 3)
-        fail(path + ".color", "expected an array of 3 numbers");
-      std::array<double, 3> rgb{};
-      for (std::size_t i = 0; i < 3; ++i) {
-        const tinygltf::Value& x = c.Get(static_cast<int>(i));
-        if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble()) || x.GetNumberAsDouble() < 0)
-          fail(item(path + ".color", i), "must be a finite number >= 0");
-        rgb[i] = x.GetNumberAsDouble();
-      }
-      color = {rgb[0], rgb[1], rgb[2]};
-    }
-    const double intensity = number(v, "intensity", path, 1);
-    if (intensity < 0) fail(path + ".intensity", "must be >= 0");
-    light.intensity = {color.r * intensity, color.g * intensity, color.b * intensity};
-
-    // Bergeron's falloff from the range and umbra's extras.
-    const tinygltf::Value none;
-    const tinygltf::Value& extras = v.Has("extras") ? v.Get("extras") : none;
-    const bool has_umbra = extras.IsObject() && extras.Has("umbra");
-    const std::string umbra_path = path + ".extras.umbra";
-    const tinygltf::Value& umbra = has_umbra ? extras.Get("umbra") : none;
-    if (has_umbra && !umbra.IsObject()) fail(umbra_path, "expected an object");
-    if (light.type == LightType::point) {
-      if (v.Has("range")) {
-        const double range = number(v, "range", path, 0);
-        if (!(range > 0)) fail(path + ".range", "must be > 0");
-        light.light_end = range;
-        light.decrease = 2;
-      }
-      if (has_umbra) {
-        for (const std::string& key : umbra.Keys())
-          if (key != "dec_begin" && key != "decrease")
-            fail(umbra_path + "." + key,
-                 "unknown field '" + key + "'; expected one of dec_begin, decrease");
-        light.dec_begin = number(umbra, "dec_begin", umbra_path, 0);
-        if (light.dec_begin < 0) fail(umbra_path + ".dec_begin", "must be >= 0");
-        if (light.light_end && *light.light_end < light.dec_begin)
-          fail(umbra_path + ".dec_begin", "must be <= range");
-        if (umbra.Has("decrease")) {
-          const tinygltf::Value& d = umbra.Get("decrease");
-          if (!d.IsInt() || d.GetNumberAsInt() < 0)
-            fail(umbra_path + ".decrease", "expected an integer >= 0");
-          light.decrease = d.GetNumberAsInt();
-        }
-      }
-    } else if (has_umbra) {
-      fail(umbra_path, "means nothing for a directional light");
-    }
-    return light;
-  }
-
-  Camera make_camera(const tinygltf::Camera& gltf, const std::string& path,
-                     const Matrix& world) const {
-    const tinygltf::PerspectiveCamera& p = gltf.perspective;
-    const std::string pp = path + ".perspective";
-    if (!std::isfinite(p.yfov) || !(p.yfov > 0 && p.yfov < std::numbers::pi))
-      fail(pp + ".yfov", "must be in (0, pi) radians");
-    if (!std::isfinite(p.aspectRatio) || p.aspectRatio < 0)
-      fail(pp + ".aspectRatio", "must be a finite number > 0");
-    Camera camera;
-    camera.fov_y_deg = p.yfov * 180 / std::numbers::pi;
-    camera.height = 480;
-    camera.width = 640;
-    if (p.aspectRatio > 0) {
-      const double width = std::round(480 * p.aspectRatio);
-      if (!(width >= 1 && width <= 16384))
-        fail(pp + ".aspectRatio", "gives an image width outside [1, 16384] at height 480");
-      camera.width = static_cast<int>(width);
-    }
-    if (gltf.extras.IsObject() && gltf.extras.Has("umbra")) {
-      const std::string umbra_path = path + ".extras.umbra";
-      const tinygltf::Value& umbra = gltf.extras.Get("umbra");
-      if (!umbra.IsObject()) fail(umbra_path, "expected an object");
-      for (const std::string& key : umbra.Keys()) {
-        if (key != "width" && key != "height")
-          fail(umbra_path + "." + key,
-               "unknown field '" + key + "'; expected one of width, height");
-        const tinygltf::Value& n = umbra.Get(key);
-        if (!n.IsInt() || n.GetNumberAsInt() < 1 || n.GetNumberAsInt() > 16384)
-          fail(umbra_path + "." + key, "must be an integer in [1, 16384]");
-        (key == "width" ? camera.width : camera.height) = n.GetNumberAsInt();
-      }
-    }
-    // A glTF camera looks down its local -Z with +Y up.
-    camera.eye = transform_point(world, {0, 0, 0});
-    const Vec3 forward = transform_direction(world, {0, 0, -1});
-    camera.look_at = camera.eye + forward;
-    camera.up = transform_direction(world, {0, 1, 0});
-    const CameraFrame frame = camera_frame(camera);
-    if (!within_coordinate_range(camera.eye) || !within_coordinate_range(camera.look_at) ||
-        camera.look_at == camera.eye ||
-        cross(camera.look_at - camera.eye, camera.up) == Vec3{0, 0, 0} || !is_finite(frame.f) ||
-        !is_finite(frame.r) || !is_finite(frame.u) || frame.r == Vec3{0, 0, 0})
-      fail(path,
-           "the node placing this camera gives no usable view (degenerate or non-finite "
-           "world matrix)");
-    return camera;
-  }
-
-  fs::path file_;
-  std::string name_;
-  std::string base_dir_;
-  fs::path folder_;  ///< canonical: external files must resolve inside it
-  /// External files read (as tinygltf named them), for Scene::inputs.
-  mutable std::vector<fs::path> externals_;
-  tinygltf::Model model_;
+  const gltf::Document& doc_;
+  const tinygltf::Model& model_;
 };
 
 }  // namespace
@@ -806,10 +390,11 @@ bool is_gltf_path(const fs::path& file) {
 }
 
 Scene parse_gltf_scene(std::string_view bytes, const fs::path& file) {
-  const GltfReader reader(bytes, file);
+  const gltf::Document doc(bytes, file);
+  const SceneReader reader(doc);
   Scene scene;
   scene.source = file;
-  for (GltfReader::Instance& instance : reader.instances()) {
+  for (SceneReader::Instance& instance : reader.instances()) {
     Model model;
     model.name = std::move(instance.name);
     model.vertices = std::move(instance.soup.vertices);
@@ -818,24 +403,24 @@ Scene parse_gltf_scene(std::string_view bytes, const fs::path& file) {
     scene.models.push_back(std::move(model));
   }
   if (scene.models.empty())
-    reader.fail("meshes", "the scene instances no mesh with triangles; umbra needs at least one");
+    doc.fail("meshes", "the scene instances no mesh with triangles; umbra needs at least one");
   scene.lights = reader.lights();
   scene.camera = reader.camera();
-  scene.inputs = reader.externals();
+  scene.inputs = doc.externals();
   return scene;
 }
 
 PolygonSoup parse_gltf_polygon_soup(std::string_view bytes, const fs::path& file) {
-  const GltfReader reader(bytes, file);
+  const gltf::Document doc(bytes, file);
   PolygonSoup soup;
   PositionWelder welder(soup.vertices);
-  for (const GltfReader::Instance& instance : reader.instances()) {
+  for (const SceneReader::Instance& instance : SceneReader(doc).instances()) {
     std::vector<std::uint32_t> remap;
     for (const Vec3& p : instance.soup.vertices) remap.push_back(welder.add(p));
     for (const Polygon& polygon : instance.soup.polygons)
       soup.polygons.push_back({remap[polygon[0]], remap[polygon[1]], remap[polygon[2]]});
   }
-  soup.files = reader.externals();
+  soup.files = doc.externals();
   return soup;
 }
 

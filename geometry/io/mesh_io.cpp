@@ -32,15 +32,15 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::pa
   } else if (is_gltf_path(name)) {
     soup = parse_gltf_polygon_soup(bytes, name);
   } else {
-    throw InputError(where, "unknown mesh extension '" + name.extension().string() +
+    throw util::InputError(where, "unknown mesh extension '" + name.extension().string() +
                                 "'; expected .off, .obj, .ply, .stl, .gltf or .glb");
   }
-  if (soup.polygons.empty()) throw InputError(where, "empty mesh: the file has no polygon");
+  if (soup.polygons.empty()) throw util::InputError(where, "empty mesh: the file has no polygon");
   return soup;
 }
 
 PolygonSoup read_polygon_soup(const std::filesystem::path& file) {
-  PolygonSoup soup = parse_polygon_soup(read_input_file(file, "mesh"), file);
+  PolygonSoup soup = parse_polygon_soup(util::read_input_file(file, "mesh"), file);
   soup.files.insert(soup.files.begin(), file);
   return soup;
 }

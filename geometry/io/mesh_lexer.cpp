@@ -91,10 +91,10 @@ Real parse_real(std::string_view token, const std::string& where, std::string_vi
                                          std::chars_format::general);
   if (digits.empty() || ptr != digits.data() + digits.size() ||
       (ec != std::errc{} && ec != std::errc::result_out_of_range)) {
-    throw InputError(where, "malformed " + std::string(what) + " " + quoted(token));
+    throw util::InputError(where, "malformed " + std::string(what) + " " + quoted(token));
   }
   if (ec == std::errc::result_out_of_range) {
-    throw InputError(where, std::string(what) + " " + quoted(token) + " is out of the range of " +
+    throw util::InputError(where, std::string(what) + " " + quoted(token) + " is out of the range of " +
                                 (sizeof(Real) == sizeof(float) ? "a float" : "a double"));
   }
   return value;
@@ -109,7 +109,7 @@ double parse_double(std::string_view token, const std::string& where, std::strin
 double parse_coordinate(std::string_view token, const std::string& where) {
   const double value = parse_real<double>(token, where, "coordinate");
   if (!std::isfinite(value))
-    throw InputError(where, "coordinate " + quoted(token) + " is not finite");
+    throw util::InputError(where, "coordinate " + quoted(token) + " is not finite");
   return value;
 }
 
@@ -128,10 +128,10 @@ std::int64_t parse_integer(std::string_view token, const std::string& where, std
   const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (digits.empty() || digits[0] == '+' || ptr != digits.data() + digits.size() ||
       (ec != std::errc{} && ec != std::errc::result_out_of_range)) {
-    throw InputError(where, "malformed " + std::string(what) + " " + quoted(token));
+    throw util::InputError(where, "malformed " + std::string(what) + " " + quoted(token));
   }
   if (ec == std::errc::result_out_of_range || value < min || value > max) {
-    throw InputError(where, std::string(what) + " " + quoted(token) + " is out of range [" +
+    throw util::InputError(where, std::string(what) + " " + quoted(token) + " is out of range [" +
                                 std::to_string(min) + ", " + std::to_string(max) + "]");
   }
   return value;

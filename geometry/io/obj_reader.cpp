@@ -26,9 +26,9 @@ std::uint32_t vertex_index(std::string_view reference, std::size_t vertex_count,
   constexpr std::int64_t kLimit = std::numeric_limits<std::int64_t>::max();
   const std::int64_t index = parse_integer(index_text, where, "face index", -kLimit, kLimit);
   const auto count = static_cast<std::int64_t>(vertex_count);
-  if (index == 0) throw InputError(where, "face index 0: OBJ indices start at 1");
+  if (index == 0) throw util::InputError(where, "face index 0: OBJ indices start at 1");
   if (index > count || index < -count) {
-    throw InputError(where, "face index " + std::to_string(index) + " out of range: " +
+    throw util::InputError(where, "face index " + std::to_string(index) + " out of range: " +
                                 std::to_string(count) + " vertices defined so far");
   }
   return static_cast<std::uint32_t>(index > 0 ? index - 1 : count + index);
@@ -39,7 +39,7 @@ std::uint32_t vertex_index(std::string_view reference, std::size_t vertex_count,
 PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
   if (bytes.size() >= 2 &&
       ((bytes[0] == '\xFE' && bytes[1] == '\xFF') || (bytes[0] == '\xFF' && bytes[1] == '\xFE'))) {
-    throw InputError(at_line(name, 1), "UTF-16 text is not supported; save the OBJ as UTF-8");
+    throw util::InputError(at_line(name, 1), "UTF-16 text is not supported; save the OBJ as UTF-8");
   }
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);  // UTF-8 byte-order mark
 
@@ -57,7 +57,7 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
       const std::string where = at_line(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n != 3 && n != 4 && n != 6 && n != 7) {
-        throw InputError(where, "vertex needs 'x y z [w]' (optionally followed by 'r g b'); got " +
+        throw util::InputError(where, "vertex needs 'x y z [w]' (optionally followed by 'r g b'); got " +
                                     std::to_string(n) + " values");
       }
       Vec3 p;
@@ -71,22 +71,22 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
         tokens.next(token);
         const double w = parse_double(token, where, "w coordinate");
         if (w != 1.0) {
-          throw InputError(where, "homogeneous coordinate w = " + std::string(token) +
+          throw util::InputError(where, "homogeneous coordinate w = " + std::string(token) +
                                       " is not supported (only w = 1)");
         }
       }
       if (soup.vertices.size() == std::numeric_limits<std::uint32_t>::max()) {
-        throw InputError(where, "too many vertices for 32-bit indices");
+        throw util::InputError(where, "too many vertices for 32-bit indices");
       }
       soup.vertices.push_back(p);
     } else if (keyword == "f" || keyword == "fo") {
       const std::string where = at_line(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n < 3) {
-        throw InputError(where,
+        throw util::InputError(where,
                          "face has " + std::to_string(n) + " vertices; at least 3 are needed");
       }
-      if (n > kMaxPolygonVertices) throw InputError(where, polygon_too_large(n));
+      if (n > kMaxPolygonVertices) throw util::InputError(where, polygon_too_large(n));
       Polygon polygon;
       polygon.reserve(n);
       while (tokens.next(token))

@@ -41,13 +41,13 @@ constexpr std::uint64_t kMinFaceBytes = 2;
 PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   LineReader lines(bytes);
   std::string_view line;
-  if (!next_content_line(lines, line)) throw InputError(name + ":1", "missing OFF header");
+  if (!next_content_line(lines, line)) throw util::InputError(name + ":1", "missing OFF header");
 
   Tokens header(line);
   std::string_view keyword;
   header.next(keyword);
   if (keyword != "OFF" && keyword != "COFF" && keyword != "NOFF" && keyword != "CNOFF") {
-    throw InputError(at_line(name, lines.line_number()),
+    throw util::InputError(at_line(name, lines.line_number()),
                      "malformed OFF header: expected OFF, COFF, NOFF or CNOFF");
   }
   // The counts follow on the header line or on the next content line.
@@ -55,7 +55,7 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   std::size_t counts_line = lines.line_number();
   if (header.count_remaining() == 0) {
     if (!next_content_line(lines, line)) {
-      throw InputError(at_line(name, lines.line_number()), "missing OFF counts line");
+      throw util::InputError(at_line(name, lines.line_number()), "missing OFF counts line");
     }
     counts = Tokens(line);
     counts_line = lines.line_number();
@@ -63,7 +63,7 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   const std::string counts_where = at_line(name, counts_line);
   const std::size_t count_tokens = counts.count_remaining();
   if (count_tokens < 2 || count_tokens > 3) {
-    throw InputError(counts_where, "malformed OFF counts: expected 'vertices faces [edges]'");
+    throw util::InputError(counts_where, "malformed OFF counts: expected 'vertices faces [edges]'");
   }
   constexpr std::int64_t kMaxCount = std::numeric_limits<std::int64_t>::max();
   std::string_view token;
@@ -79,12 +79,12 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   const std::uint64_t room = lines.remaining() + 1;  // the last line may lack its '\n'
   if (nv > room / kMinVertexBytes || nf > room / kMinFaceBytes ||
       nv * kMinVertexBytes + nf * kMinFaceBytes > room) {
-    throw InputError(counts_where, "declares " + std::to_string(nv) + " vertices and " +
+    throw util::InputError(counts_where, "declares " + std::to_string(nv) + " vertices and " +
                                        std::to_string(nf) + " faces, more than the remaining " +
                                        std::to_string(lines.remaining()) + " bytes can hold");
   }
   if (nv > std::numeric_limits<std::uint32_t>::max()) {
-    throw InputError(counts_where, "too many vertices for 32-bit indices");
+    throw util::InputError(counts_where, "too many vertices for 32-bit indices");
   }
 
   PolygonSoup soup;
@@ -92,13 +92,13 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   soup.polygons.reserve(nf);
   for (std::uint64_t v = 0; v < nv; ++v) {
     if (!next_content_line(lines, line)) {
-      throw InputError(
+      throw util::InputError(
           at_line(name, lines.line_number()),
           "file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
     }
     const std::string where = at_line(name, lines.line_number());
     Tokens values(line);
-    if (values.count_remaining() < 3) throw InputError(where, "vertex needs 3 coordinates");
+    if (values.count_remaining() < 3) throw util::InputError(where, "vertex needs 3 coordinates");
     Vec3 p;
     values.next(token);
     p.x = parse_coordinate(token, where);
@@ -111,7 +111,7 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   const auto max_index = static_cast<std::int64_t>(nv) - 1;
   for (std::uint64_t f = 0; f < nf; ++f) {
     if (!next_content_line(lines, line)) {
-      throw InputError(
+      throw util::InputError(
           at_line(name, lines.line_number()),
           "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
     }
@@ -121,20 +121,20 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
     const std::size_t available = values.count_remaining();
     const auto n = parse_integer(token, where, "face vertex count", 0, kMaxCount);
     if (static_cast<std::uint64_t>(n) > available) {
-      throw InputError(where, "face declares " + std::to_string(n) + " vertices but the line has " +
+      throw util::InputError(where, "face declares " + std::to_string(n) + " vertices but the line has " +
                                   std::to_string(available) + " more values");
     }
     if (n < 3) {
-      throw InputError(where, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
+      throw util::InputError(where, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
     }
     if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
-      throw InputError(where, polygon_too_large(static_cast<std::uint64_t>(n)));
+      throw util::InputError(where, polygon_too_large(static_cast<std::uint64_t>(n)));
     Polygon polygon;
     polygon.reserve(static_cast<std::size_t>(n));
     for (std::int64_t k = 0; k < n; ++k) {
       values.next(token);
       if (max_index < 0)
-        throw InputError(where, "face index " + std::string(token) + " but the file has no vertex");
+        throw util::InputError(where, "face index " + std::string(token) + " but the file has no vertex");
       polygon.push_back(
           static_cast<std::uint32_t>(parse_integer(token, where, "face index", 0, max_index)));
     }

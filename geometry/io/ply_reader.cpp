@@ -118,12 +118,12 @@ Header parse_header(std::string_view bytes, const std::string& name) {
         Tokens t(line);
         return !t.next(token) || token != "ply" || t.next(token);
       }()) {
-    throw InputError(at_line(name, 1), "malformed PLY header: the first line must be 'ply'");
+    throw util::InputError(at_line(name, 1), "malformed PLY header: the first line must be 'ply'");
   }
   bool have_format = false;
   while (true) {
     if (!lines.next(line)) {
-      throw InputError(at_line(name, lines.line_number()), "malformed PLY header: no 'end_header'");
+      throw util::InputError(at_line(name, lines.line_number()), "malformed PLY header: no 'end_header'");
     }
     const std::string where = at_line(name, lines.line_number());
     Tokens tokens(line);
@@ -135,7 +135,7 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       std::string_view format;
       std::string_view version;
       if (!tokens.next(format) || !tokens.next(version) || tokens.next(token) || version != "1.0") {
-        throw InputError(where, "malformed PLY format line: expected 'format <encoding> 1.0'");
+        throw util::InputError(where, "malformed PLY format line: expected 'format <encoding> 1.0'");
       }
       if (format == "ascii")
         header.encoding = Encoding::ascii;
@@ -144,12 +144,12 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       else if (format == "binary_big_endian")
         header.encoding = Encoding::big_endian;
       else
-        throw InputError(where, "unknown PLY format '" + std::string(format) + "'");
+        throw util::InputError(where, "unknown PLY format '" + std::string(format) + "'");
       have_format = true;
     } else if (keyword == "element") {
       std::string_view element_name;
       if (!tokens.next(element_name) || !tokens.next(token) || tokens.count_remaining() != 0) {
-        throw InputError(where, "malformed PLY element line: expected 'element <name> <count>'");
+        throw util::InputError(where, "malformed PLY element line: expected 'element <name> <count>'");
       }
       Element element;
       element.name = element_name;
@@ -158,7 +158,7 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       element.line = lines.line_number();
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
-      if (header.elements.empty()) throw InputError(where, "PLY property before any element");
+      if (header.elements.empty()) throw util::InputError(where, "PLY property before any element");
       Property property;
       std::string_view type_name;
       tokens.next(type_name);
@@ -168,33 +168,33 @@ Header parse_header(std::string_view bytes, const std::string& name) {
         std::string_view property_name;
         if (!tokens.next(count_name) || !tokens.next(item_name) || !tokens.next(property_name) ||
             tokens.next(token)) {
-          throw InputError(where,
+          throw util::InputError(where,
                            "malformed PLY list property: expected 'property list <count type> "
                            "<item type> <name>'");
         }
         const auto count_type = scalar_named(count_name);
         const auto item_type = scalar_named(item_name);
-        if (!count_type || !item_type) throw InputError(where, "unknown PLY scalar type");
+        if (!count_type || !item_type) throw util::InputError(where, "unknown PLY scalar type");
         if (!is_integer(*count_type))
-          throw InputError(where, "PLY list count type must be an integer type");
+          throw util::InputError(where, "PLY list count type must be an integer type");
         property = {std::string(property_name), true, *count_type, *item_type};
       } else {
         std::string_view property_name;
         const auto type = scalar_named(type_name);
         if (!type)
-          throw InputError(where, "unknown PLY scalar type '" + std::string(type_name) + "'");
+          throw util::InputError(where, "unknown PLY scalar type '" + std::string(type_name) + "'");
         if (!tokens.next(property_name) || tokens.next(token)) {
-          throw InputError(where, "malformed PLY property: expected 'property <type> <name>'");
+          throw util::InputError(where, "malformed PLY property: expected 'property <type> <name>'");
         }
         property = {std::string(property_name), false, Scalar::u8, *type};
       }
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      throw InputError(where, "unknown PLY header keyword '" + std::string(keyword) + "'");
+      throw util::InputError(where, "unknown PLY header keyword '" + std::string(keyword) + "'");
     }
   }
   if (!have_format)
-    throw InputError(at_line(name, lines.line_number()), "PLY header has no format line");
+    throw util::InputError(at_line(name, lines.line_number()), "PLY header has no format line");
   header.data_offset = lines.position();
   header.data_line = lines.line_number() + 1;
   return header;
@@ -227,7 +227,7 @@ class AsciiSource {
  private:
   std::string_view take(const std::string& context) {
     std::string_view token;
-    if (!cursor_.next(token)) throw InputError(where(), "file ends inside " + context);
+    if (!cursor_.next(token)) throw util::InputError(where(), "file ends inside " + context);
     return token;
   }
   TextCursor cursor_;
@@ -295,7 +295,7 @@ class BinarySource {
       default:
         break;  // the header admits only integer types here
     }
-    throw InputError(where(), "internal: integer read of a floating-point PLY type");
+    throw util::InputError(where(), "internal: integer read of a floating-point PLY type");
   }
   bool has_room(std::uint64_t n, Scalar type) const {
     return n <= (bytes_.size() - pos_) / size_of(type);
@@ -304,7 +304,7 @@ class BinarySource {
  private:
   void load(void* out, std::size_t size, const std::string& context) {
     if (bytes_.size() - pos_ < size) {
-      throw InputError(where(), "truncated binary data: file ends inside " + context);
+      throw util::InputError(where(), "truncated binary data: file ends inside " + context);
     }
     unsigned char raw[8];
     std::memcpy(raw, bytes_.data() + pos_, size);
@@ -337,12 +337,12 @@ void check_counts(const Header& header, std::size_t body_size, const std::string
     }
     const std::string where = at_line(name, element.line);
     if (per_item == 0 && element.count > 0) {
-      throw InputError(where, "PLY element '" + element.name + "' has no properties");
+      throw util::InputError(where, "PLY element '" + element.name + "' has no properties");
     }
     if (per_item == 0) continue;
     const std::uint64_t room = body_size + 1;  // an ASCII body may lack its last separator
     if (element.count > room / per_item || needed + element.count * per_item > room) {
-      throw InputError(where, "PLY element '" + element.name + "' declares " +
+      throw util::InputError(where, "PLY element '" + element.name + "' declares " +
                                   std::to_string(element.count) +
                                   " items, more than the remaining " + std::to_string(body_size) +
                                   " bytes can hold");
@@ -370,9 +370,9 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
               is_face && (property.name == "vertex_indices" || property.name == "vertex_index");
           const std::int64_t n = source.integer(property.count_type, "list length", context);
           const std::string at = source.last_where();
-          if (n < 0) throw InputError(at, "negative list length in " + context);
+          if (n < 0) throw util::InputError(at, "negative list length in " + context);
           if (!source.has_room(static_cast<std::uint64_t>(n), property.type)) {
-            throw InputError(at, "truncated data: list length " + std::to_string(n) + " in " +
+            throw util::InputError(at, "truncated data: list length " + std::to_string(n) + " in " +
                                      context + " runs past the end of the file");
           }
           if (!indices) {
@@ -380,18 +380,18 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
             continue;
           }
           if (n < 3) {
-            throw InputError(at,
+            throw util::InputError(at,
                              "face has " + std::to_string(n) + " vertices; at least 3 are needed");
           }
           if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
-            throw InputError(at, polygon_too_large(static_cast<std::uint64_t>(n)));
+            throw util::InputError(at, polygon_too_large(static_cast<std::uint64_t>(n)));
           Polygon polygon;
           polygon.reserve(static_cast<std::size_t>(n));
           for (std::int64_t k = 0; k < n; ++k) {
             const std::int64_t index = source.integer(property.type, "face index", context);
             const std::string index_at = source.last_where();
             if (index < 0 || index > max_index) {
-              throw InputError(index_at, "face index " + std::to_string(index) + " out of range: " +
+              throw util::InputError(index_at, "face index " + std::to_string(index) + " out of range: " +
                                              std::to_string(vertex_count) + " vertices");
             }
             polygon.push_back(static_cast<std::uint32_t>(index));
@@ -401,7 +401,7 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
                    (property.name == "x" || property.name == "y" || property.name == "z")) {
           const double value = source.real(property.type, "coordinate", context);
           if (!std::isfinite(value))
-            throw InputError(source.last_where(), "coordinate " + property.name + " is not finite");
+            throw util::InputError(source.last_where(), "coordinate " + property.name + " is not finite");
           (property.name == "x" ? p.x : property.name == "y" ? p.y : p.z) = value;
         } else {
           source.real(property.type, "value", context);
@@ -422,44 +422,44 @@ PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
   for (const Element& element : header.elements) {
     const std::string where = at_line(name, element.line);
     if (element.name == "vertex") {
-      if (vertex) throw InputError(where, "second PLY element 'vertex'");
+      if (vertex) throw util::InputError(where, "second PLY element 'vertex'");
       vertex = &element;
       for (const char* axis : {"x", "y", "z"}) {
         int found = 0;
         for (const Property& property : element.properties) {
           if (property.name != axis) continue;
           if (property.is_list)
-            throw InputError(where, std::string("vertex property ") + axis + " is a list");
+            throw util::InputError(where, std::string("vertex property ") + axis + " is a list");
           ++found;
         }
         if (found != 1) {
-          throw InputError(where,
+          throw util::InputError(where,
                            std::string("PLY element 'vertex' needs exactly one property ") + axis);
         }
       }
     } else if (element.name == "face") {
-      if (face) throw InputError(where, "second PLY element 'face'");
+      if (face) throw util::InputError(where, "second PLY element 'face'");
       face = &element;
       int found = 0;
       for (const Property& property : element.properties) {
         if (property.name != "vertex_indices" && property.name != "vertex_index") continue;
         if (!property.is_list || !is_integer(property.type)) {
-          throw InputError(where, "face property " + property.name + " must be a list of integers");
+          throw util::InputError(where, "face property " + property.name + " must be a list of integers");
         }
         ++found;
       }
       if (found != 1) {
-        throw InputError(
+        throw util::InputError(
             where, "PLY element 'face' needs one list property vertex_indices (or vertex_index)");
       }
     }
   }
   if (face && face->count > 0 && !vertex) {
-    throw InputError(at_line(name, face->line), "PLY file has faces but no element 'vertex'");
+    throw util::InputError(at_line(name, face->line), "PLY file has faces but no element 'vertex'");
   }
   check_counts(header, bytes.size() - header.data_offset, name);
   if (vertex && vertex->count > std::numeric_limits<std::uint32_t>::max()) {
-    throw InputError(at_line(name, vertex->line), "too many vertices for 32-bit indices");
+    throw util::InputError(at_line(name, vertex->line), "too many vertices for 32-bit indices");
   }
 
   PolygonSoup soup;

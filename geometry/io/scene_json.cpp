@@ -1,19 +1,18 @@
 // The JSON scene format (docs/scene-format.md is the user's reference).
 //
-// Parsing goes through nlohmann-json's SAX interface so that every error can
-// say where it is: syntax errors by line and column, numbers that overflow a
-// double (1e999) and duplicated keys by their field path. Validation then
-// walks the document once, naming each field by its path
-// ("lights[1].position"); unknown keys are errors so that typos never pass.
+// The text is parsed with every error located (located_json.h); the schema
+// below then walks the document once through validating accessors
+// (json_fields.h) that name each field by its path ("lights[1].position").
 #include <fmt/format.h>
 #include <geometry/exact/coordinate_range.h>
 #include <geometry/io/gltf_scene.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
+#include <geometry/io/json_fields.h>
 #include <geometry/io/mesh_io.h>
-#include <geometry/sample_ray.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/io/transform.h>
+#include <geometry/sample_ray.h>
+#include <util/input_error.h>
+#include <util/input_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,235 +25,12 @@
 namespace umbra::geometry {
 namespace {
 
-using Json = nlohmann::json;
+using json::child;
+using json::Fields;
+using json::item;
+using json::Json;
 
-std::string child(const std::string& path, std::string_view key) {
-  return path.empty() ? std::string(key) : path + "." + std::string(key);
-}
-
-std::string item(const std::string& path, std::size_t index) {
-  return path + "[" + std::to_string(index) + "]";
-}
-
-// Builds the document like nlohmann's own DOM parser, and on the side keeps
-// the path of the value being parsed, refuses duplicated keys, and turns parse
-// errors into InputErrors with a line and column.
-class LocatingSax {
- public:
-  LocatingSax(Json& root, std::string_view text, const std::string& file)
-      : dom_(root, true), text_(text), file_(file) {}
-
-  bool null() { return value(dom_.null()); }
-  bool boolean(bool v) { return value(dom_.boolean(v)); }
-  bool number_integer(Json::number_integer_t v) { return value(dom_.number_integer(v)); }
-  bool number_unsigned(Json::number_unsigned_t v) { return value(dom_.number_unsigned(v)); }
-  bool number_float(Json::number_float_t v, const Json::string_t& s) {
-    return value(dom_.number_float(v, s));
-  }
-  bool string(Json::string_t& v) { return value(dom_.string(v)); }
-  bool binary(Json::binary_t& v) { return value(dom_.binary(v)); }
-  bool start_object(std::size_t n) {
-    frames_.push_back({true, {}, 0, {}});
-    return dom_.start_object(n);
-  }
-  bool key(Json::string_t& k) {
-    Frame& frame = frames_.back();
-    frame.key = k;
-    if (!frame.keys.insert(k).second) {
-      throw InputError(file_ + ": " + path(), "duplicate field '" + k + "'");
-    }
-    return dom_.key(k);
-  }
-  bool end_object() {
-    frames_.pop_back();
-    return value(dom_.end_object());
-  }
-  bool start_array(std::size_t n) {
-    frames_.push_back({false, {}, 0, {}});
-    return dom_.start_array(n);
-  }
-  bool end_array() {
-    frames_.pop_back();
-    return value(dom_.end_array());
-  }
-  bool parse_error(std::size_t position, const std::string& last_token,
-                   const nlohmann::detail::exception& error) {
-    // nlohmann's position counts the characters read, the offending one
-    // included: the error is at 0-based offset position - 1.
-    const std::size_t offset = std::min(position == 0 ? 0 : position - 1, text_.size());
-    const std::size_t line =
-        1 + static_cast<std::size_t>(std::count(text_.begin(), text_.begin() + offset, '\n'));
-    const std::size_t line_start =
-        text_.rfind('\n', offset == 0 ? std::string_view::npos : offset - 1);
-    const std::size_t column =
-        offset - (line_start == std::string_view::npos ? 0 : line_start + 1) + 1;
-    const std::string at = "line " + std::to_string(line) + ", column " + std::to_string(column);
-    if (error.id == 406) {  // number overflow: the value would be infinite
-      const std::string field = path();
-      throw InputError(field.empty() ? file_ : file_ + ": " + field,
-                       "number " + last_token + " is not a finite double (" + at + ")");
-    }
-    // Keep nlohmann's explanation, without its "[json.exception...] parse error at ...:" prefix.
-    std::string what = error.what();
-    if (const auto syntax = what.find("syntax error"); syntax != std::string::npos) {
-      what = what.substr(syntax);
-    } else if (const auto bracket = what.find("] "); bracket != std::string::npos) {
-      what = what.substr(bracket + 2);
-    }
-    throw InputError(file_ + ":" + std::to_string(line) + ":" + std::to_string(column),
-                     "malformed JSON: " + what);
-  }
-
- private:
-  struct Frame {
-    bool object;
-    std::string key;
-    std::size_t index;
-    std::set<std::string> keys;
-  };
-  bool value(bool ok) {
-    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-    return ok;
-  }
-  std::string path() const {
-    std::string out;
-    for (const Frame& frame : frames_)
-      out = frame.object ? child(out, frame.key) : item(out, frame.index);
-    return out;
-  }
-
-  nlohmann::detail::json_sax_dom_parser<Json> dom_;
-  std::string_view text_;
-  const std::string& file_;
-  std::vector<Frame> frames_;
-};
-
-// Validating accessors; each names the file and the field's path on failure.
-class SceneReader {
- public:
-  explicit SceneReader(const std::filesystem::path& file) : file_(file), name_(file.string()) {}
-
-  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw InputError(path.empty() ? name_ : name_ + ": " + path, what);
-  }
-
-  void expect_object(const Json& v, const std::string& path) const {
-    if (!v.is_object()) fail(path, std::string("expected an object, found ") + kind(v));
-  }
-
-  void check_keys(const Json& object, const std::string& path,
-                  std::initializer_list<std::string_view> allowed) const {
-    for (const auto& [key, value] : object.items()) {
-      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      std::string list;
-      for (std::string_view name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
-      fail(child(path, key), "unknown field '" + key + "'; expected one of " + list);
-    }
-  }
-
-  const Json& required(const Json& object, std::string_view key, const std::string& path) const {
-    const auto it = object.find(key);
-    if (it == object.end())
-      fail(child(path, key), "missing required field '" + std::string(key) + "'");
-    return *it;
-  }
-
-  double number(const Json& v, const std::string& path) const {
-    if (!v.is_number()) fail(path, std::string("expected a number, found ") + kind(v));
-    const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(path, "number is not finite");
-    return d;
-  }
-
-  int integer(const Json& v, const std::string& path, int min, int max) const {
-    if (!v.is_number_integer()) fail(path, std::string("expected an integer, found ") + kind(v));
-    const bool in_range =
-        v.is_number_unsigned()
-            ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(max) &&
-                  (min <= 0 || v.get<std::uint64_t>() >= static_cast<std::uint64_t>(min))
-            : v.get<std::int64_t>() >= min && v.get<std::int64_t>() <= max;
-    if (!in_range)
-      fail(path,
-           "must be an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
-    return static_cast<int>(v.get<std::int64_t>());
-  }
-
-  bool boolean(const Json& v, const std::string& path) const {
-    if (!v.is_boolean()) fail(path, std::string("expected true or false, found ") + kind(v));
-    return v.get<bool>();
-  }
-
-  std::string string(const Json& v, const std::string& path) const {
-    if (!v.is_string()) fail(path, std::string("expected a string, found ") + kind(v));
-    return v.get<std::string>();
-  }
-
-  const Json& array(const Json& v, const std::string& path) const {
-    if (!v.is_array()) fail(path, std::string("expected an array, found ") + kind(v));
-    return v;
-  }
-
-  Vec3 vec3(const Json& v, const std::string& path) const {
-    if (!v.is_array() || v.size() != 3)
-      fail(path, "expected an array of 3 numbers, found " + shape(v));
-    return {number(v[0], item(path, 0)), number(v[1], item(path, 1)), number(v[2], item(path, 2))};
-  }
-
-  /// A position: a vector within ±kMaxCoordinate (coordinate_range.h).
-  Vec3 point(const Json& v, const std::string& path) const {
-    const Vec3 p = vec3(v, path);
-    if (!within_coordinate_range(p)) fail(path, out_of_range(p));
-    return p;
-  }
-
-  /// A direction: a nonzero vector that normalizes in doubles.
-  Vec3 direction(const Json& v, const std::string& path) const {
-    const Vec3 d = vec3(v, path);
-    if (d == Vec3{0, 0, 0}) fail(path, "must not be the zero vector");
-    if (!normalizable_direction(d))
-      fail(path, fmt::format("({}, {}, {}) cannot be normalized in doubles: its largest component "
-                             "must be between 2^-500 and 2^500 in magnitude",
-                             d.x, d.y, d.z));
-    return d;
-  }
-
-  static std::string out_of_range(const Vec3& p) {
-    return fmt::format(
-        "({}, {}, {}) is outside ±2^500 (~3.27e150), the range where umbra's "
-        "arithmetic is exact (docs/scene-format.md, \"Numbers\")",
-        p.x, p.y, p.z);
-  }
-
-  Rgb rgb(const Json& v, const std::string& path) const {
-    const Vec3 c = vec3(v, path);
-    for (int i = 0; i < 3; ++i) {
-      if (c[i] < 0) fail(item(path, static_cast<std::size_t>(i)), "must be >= 0");
-    }
-    return {c.x, c.y, c.z};
-  }
-
-  const std::filesystem::path& file() const { return file_; }
-
- private:
-  static const char* kind(const Json& v) {
-    if (v.is_number_integer()) return "an integer";
-    if (v.is_number()) return "a number";
-    if (v.is_string()) return "a string";
-    if (v.is_boolean()) return "a boolean";
-    if (v.is_null()) return "null";
-    if (v.is_array()) return "an array";
-    return "an object";
-  }
-  static std::string shape(const Json& v) {
-    if (v.is_array()) return "an array of " + std::to_string(v.size());
-    return kind(v);
-  }
-
-  std::filesystem::path file_;
-  std::string name_;
-};
-
-Camera read_camera(const SceneReader& in, const Json& v) {
+Camera read_camera(const Fields& in, const Json& v) {
   const std::string path = "camera";
   in.expect_object(v, path);
   in.check_keys(v, path, {"eye", "look_at", "up", "fov_y_deg", "width", "height"});
@@ -291,7 +67,7 @@ Camera read_camera(const SceneReader& in, const Json& v) {
   return camera;
 }
 
-Light read_light(const SceneReader& in, const Json& v, const std::string& path) {
+Light read_light(const Fields& in, const Json& v, const std::string& path) {
   in.expect_object(v, path);
   Light light;
   const std::string type = in.string(in.required(v, "type", path), child(path, "type"));
@@ -335,7 +111,7 @@ Light read_light(const SceneReader& in, const Json& v, const std::string& path) 
   return light;
 }
 
-Transform read_transform(const SceneReader& in, const Json& v, const std::string& path) {
+Transform read_transform(const Fields& in, const Json& v, const std::string& path) {
   in.expect_object(v, path);
   in.check_keys(v, path, {"scale", "rotate_deg", "translate"});
   Transform transform;
@@ -361,7 +137,7 @@ Transform read_transform(const SceneReader& in, const Json& v, const std::string
   return transform;
 }
 
-PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std::string& path) {
+PolygonSoup read_inline_polygons(const Fields& in, const Json& v, const std::string& path) {
   in.expect_object(v, path);
   in.check_keys(v, path, {"vertices", "faces"});
   PolygonSoup soup;
@@ -404,7 +180,7 @@ PolygonSoup read_inline_polygons(const SceneReader& in, const Json& v, const std
   return soup;
 }
 
-Model read_model(const SceneReader& in, const Json& v, std::size_t index,
+Model read_model(const Fields& in, const Json& v, std::size_t index,
                  std::vector<std::filesystem::path>& inputs) {
   const std::string path = item("models", index);
   in.expect_object(v, path);
@@ -438,7 +214,7 @@ Model read_model(const SceneReader& in, const Json& v, std::size_t index,
     try {
       soup = read_polygon_soup(in.file().parent_path() / mesh);
       inputs.insert(inputs.end(), soup.files.begin(), soup.files.end());
-    } catch (const InputError& error) {
+    } catch (const util::InputError& error) {
       in.fail(mesh_path, error.what());  // the mesh reader's message names the mesh file and line
     }
   } else {
@@ -457,7 +233,7 @@ Model read_model(const SceneReader& in, const Json& v, std::size_t index,
     const std::string at = v.contains("transform") ? child(path, "transform")
                            : has_mesh              ? child(path, "mesh")
                                       : item(child(child(path, "polygons"), "vertices"), k);
-    in.fail(at, "vertex " + std::to_string(k) + " " + SceneReader::out_of_range(model.vertices[k]));
+    in.fail(at, "vertex " + std::to_string(k) + " " + Fields::out_of_range(model.vertices[k]));
   }
   model.polygons = std::move(soup.polygons);
   return model;
@@ -467,11 +243,8 @@ Model read_model(const SceneReader& in, const Json& v, std::size_t index,
 
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& file) {
   const std::string name = file.string();
-  Json root;
-  LocatingSax sax(root, json_text, name);
-  Json::sax_parse(json_text, &sax);
-
-  const SceneReader in(file);
+  const Json root = json::parse_located(json_text, name);
+  const Fields in(file);
   if (!root.is_object()) in.fail("", "a scene must be a JSON object");
   in.check_keys(root, "", {"camera", "ambient", "lights", "models"});
 
@@ -492,7 +265,7 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file)
 }
 
 Scene load_scene(const std::filesystem::path& file) {
-  const std::string text = read_input_file(file, "scene");
+  const std::string text = util::read_input_file(file, "scene");
   Scene scene = is_gltf_path(file) ? parse_gltf_scene(text, file) : parse_scene(text, file);
   scene.inputs.insert(scene.inputs.begin(), file);
   return scene;

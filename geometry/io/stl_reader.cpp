@@ -48,7 +48,7 @@ PolygonSoup parse_binary(std::string_view bytes, std::uint32_t count, const std:
         const std::size_t offset = facet + 12 + 12 * corner + 4 * axis;
         *axes[axis] = static_cast<double>(read_f32_le(bytes.data() + offset));
         if (!std::isfinite(*axes[axis])) {
-          throw InputError(at_byte(name, offset),
+          throw util::InputError(at_byte(name, offset),
                            "coordinate is not finite (triangle " + std::to_string(t) + ")");
         }
       }
@@ -70,18 +70,18 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
   std::string_view token;
   auto expect = [&](std::string_view keyword) {
     if (!cursor.next(token)) {
-      throw InputError(at_line(name, cursor.line()),
+      throw util::InputError(at_line(name, cursor.line()),
                        "file ends where '" + std::string(keyword) + "' was expected");
     }
     if (!keyword_is(token, keyword)) {
-      throw InputError(at_line(name, cursor.line()), "expected '" + std::string(keyword) +
+      throw util::InputError(at_line(name, cursor.line()), "expected '" + std::string(keyword) +
                                                          "', found '" +
                                                          std::string(token.substr(0, 40)) + "'");
     }
   };
   auto number = [&](bool coordinate) {
     if (!cursor.next(token))
-      throw InputError(at_line(name, cursor.line()), "file ends inside a facet");
+      throw util::InputError(at_line(name, cursor.line()), "file ends inside a facet");
     const std::string where = at_line(name, cursor.line());
     return coordinate ? parse_coordinate(token, where)
                       : parse_double(token, where, "normal component");
@@ -89,19 +89,19 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
 
   while (cursor.next(token)) {  // one solid per turn
     if (!keyword_is(token, "solid")) {
-      throw InputError(at_line(name, cursor.line()),
+      throw util::InputError(at_line(name, cursor.line()),
                        "expected 'solid', found '" + std::string(token.substr(0, 40)) + "'");
     }
     cursor.skip_line();  // the solid's name
     while (true) {
       if (!cursor.next(token))
-        throw InputError(at_line(name, cursor.line()), "file ends before 'endsolid'");
+        throw util::InputError(at_line(name, cursor.line()), "file ends before 'endsolid'");
       if (keyword_is(token, "endsolid")) {
         cursor.skip_line();
         break;
       }
       if (!keyword_is(token, "facet")) {
-        throw InputError(at_line(name, cursor.line()), "expected 'facet' or 'endsolid', found '" +
+        throw util::InputError(at_line(name, cursor.line()), "expected 'facet' or 'endsolid', found '" +
                                                            std::string(token.substr(0, 40)) + "'");
       }
       const std::size_t facet_line = cursor.line();
@@ -112,10 +112,10 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
       Polygon polygon;
       while (true) {
         if (!cursor.next(token))
-          throw InputError(at_line(name, cursor.line()), "file ends inside a facet");
+          throw util::InputError(at_line(name, cursor.line()), "file ends inside a facet");
         if (keyword_is(token, "endloop")) break;
         if (!keyword_is(token, "vertex")) {
-          throw InputError(
+          throw util::InputError(
               at_line(name, cursor.line()),
               "expected 'vertex' or 'endloop', found '" + std::string(token.substr(0, 40)) + "'");
         }
@@ -125,10 +125,10 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
         p.z = number(true);
         polygon.push_back(merger.add(p));
         if (polygon.size() > kMaxPolygonVertices)
-          throw InputError(at_line(name, facet_line), polygon_too_large(polygon.size()));
+          throw util::InputError(at_line(name, facet_line), polygon_too_large(polygon.size()));
       }
       if (polygon.size() < 3) {
-        throw InputError(at_line(name, facet_line), "facet has " + std::to_string(polygon.size()) +
+        throw util::InputError(at_line(name, facet_line), "facet has " + std::to_string(polygon.size()) +
                                                         " vertices; at least 3 are needed");
       }
       expect("endfacet");
@@ -153,7 +153,7 @@ PolygonSoup parse_stl(std::string_view bytes, const std::string& name) {
     if (84 + 50 * static_cast<std::uint64_t>(count) == bytes.size())
       return parse_binary(bytes, count, name);
     if (!starts_with_solid(bytes)) {
-      throw InputError(at_byte(name, 80),
+      throw util::InputError(at_byte(name, 80),
                        "truncated or oversized binary STL: the header declares " +
                            std::to_string(count) + " triangles (84 + 50·" + std::to_string(count) +
                            " = " + std::to_string(84 + 50 * static_cast<std::uint64_t>(count)) +
@@ -161,7 +161,7 @@ PolygonSoup parse_stl(std::string_view bytes, const std::string& name) {
                            " bytes, and it is not ASCII STL (no 'solid' first)");
     }
   } else if (!starts_with_solid(bytes)) {
-    throw InputError(name,
+    throw util::InputError(name,
                      "not an STL file: " + std::to_string(bytes.size()) +
                          " bytes is too short for binary STL and it does not start with 'solid'");
   }

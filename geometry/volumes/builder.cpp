@@ -401,7 +401,7 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
       std::count_if(scene.lights.begin(), scene.lights.end(),
                     [](const Light& l) { return l.type == LightType::point; });
   if (point_lights >= 4)
-    parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
+    util::parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
       if (scene.models[mi].casts_shadows)
         share.runs[mi] = triangle_runs(scene.models[mi], tables[mi].surfaces);
     });
@@ -409,7 +409,7 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
   // The lights are independent: each builds its own part on some thread;
   // the parts are then put together in light order, as one pass would.
   std::vector<LightVolume> parts(scene.lights.size());
-  parallel_for(parts.size(), options.threads, [&](std::size_t li) {
+  util::parallel_for(parts.size(), options.threads, [&](std::size_t li) {
     parts[li] = build_light_volume(share, static_cast<std::uint32_t>(li), options);
   });
 

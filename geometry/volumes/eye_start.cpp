@@ -106,7 +106,7 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsign
 
   // One exact query per light, independent of the others: each light writes
   // only its own count, flag, planes and groups (a group belongs to one light).
-  parallel_for(lights, threads, [&](std::size_t li) {
+  util::parallel_for(lights, threads, [&](std::size_t li) {
     const auto l = static_cast<std::uint32_t>(li);
     const HPoint lp = light_point(scene.lights[l]);
     auto odd = shadowing_polygons(index, eye, l);

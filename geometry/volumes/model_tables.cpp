@@ -7,7 +7,7 @@ std::vector<ModelTables> model_tables(const Scene& scene, unsigned threads, bool
   std::vector<ModelTables> tables(scene.models.size());
   // Two items per model: a scene is often one large mesh on a floor, whose
   // surfaces and edge table then take a thread each.
-  parallel_for(2 * scene.models.size(), threads, [&](std::size_t item) {
+  util::parallel_for(2 * scene.models.size(), threads, [&](std::size_t item) {
     const Model& model = scene.models[item / 2];
     if (casting_only && !model.casts_shadows) return;
     if (item % 2 == 0)

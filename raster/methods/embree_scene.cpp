@@ -67,7 +67,7 @@ RTCScene triangle_scene(RTCDevice device, const std::vector<Float3>& vertices,
 
 EmbreeScene::EmbreeScene(const geometry::SceneIndex& index, unsigned threads) {
   // One thread count for the whole render: Embree's build threads too.
-  const std::string config = "threads=" + std::to_string(resolve_threads(threads));
+  const std::string config = "threads=" + std::to_string(util::resolve_threads(threads));
   device_ = rtcNewDevice(config.c_str());
   if (!device_)
     throw std::runtime_error("render --method ray: cannot create an Embree device (error " +

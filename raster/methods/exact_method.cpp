@@ -16,10 +16,10 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   const std::size_t lights = scene.lights.size();
   Frame frame(camera.width, camera.height, lights, options.threads);
   const auto start = std::chrono::steady_clock::now();
-  Progress progress(options.progress);
+  util::Progress progress(options.progress);
   progress.phase("exact", static_cast<std::uint64_t>(camera.height));
 
-  parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_rows(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);

@@ -8,7 +8,7 @@ namespace umbra::raster {
 void check_float_range(const geometry::Scene& scene, std::string_view method) {
   const std::string file = scene.source.empty() ? "scene" : scene.source.string();
   const auto refuse = [&](const std::string& what, double magnitude) {
-    throw geometry::InputError(
+    throw util::InputError(
         file + ": " + what,
         fmt::format("coordinates up to {:g} are beyond what --method {} computes in float "
                     "(at most 2^60, ~1.15e18); use --method volume or exact",
@@ -30,7 +30,7 @@ void check_float_range(const geometry::Scene& scene, std::string_view method) {
       const double m = geometry::max_abs(light.direction);
       if (m > kMaxFloatCoordinate) refuse(fmt::format("lights[{}].direction", i), m);
       if (m < kMinFloatDirectionComponent)
-        throw geometry::InputError(
+        throw util::InputError(
             file + ": " + fmt::format("lights[{}].direction", i),
             fmt::format("is too small for --method {} to normalize in float (its largest "
                         "component must be at least 2^-60); use --method volume or exact",

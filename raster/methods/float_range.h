@@ -19,7 +19,7 @@ inline constexpr double kMaxFloatCoordinate = 0x1p60;  // ~1.15e18
 /// magnitude, so that its float square (2^-120) is still a normal float.
 inline constexpr double kMinFloatDirectionComponent = 0x1p-60;
 
-/// Throws geometry::InputError naming the scene file and the first model
+/// Throws util::InputError naming the scene file and the first model
 /// (index and name), light or camera field whose coordinates `method`
 /// ("map", "ray") cannot represent in float.
 void check_float_range(const geometry::Scene& scene, std::string_view method);

@@ -101,10 +101,10 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const std::size_t lights = scene.lights.size();
   const std::size_t pixels = static_cast<std::size_t>(camera.width) * camera.height;
-  Progress progress(options.progress);
+  util::Progress progress(options.progress);
 
   // 1. The visible surface, as Method::volume finds it.
-  auto start = Clock::now();
+  auto start = util::Clock::now();
   const SurfaceTable table = surface_table(index);
   const ReachTable reach(table.polygons, scene.lights);
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
@@ -123,7 +123,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   std::atomic<std::uint64_t> fallbacks{0};
   Frame frame(camera.width, camera.height, lights, options.threads);
   progress.phase("visible", static_cast<std::uint64_t>(camera.height));
-  parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_rows(camera.height, options.threads, [&](int j) {
     std::vector<std::uint32_t> row_needed(lights, 0);
     std::uint64_t row_fallbacks = 0;
     for (int i = 0; i < camera.width; ++i) {
@@ -176,10 +176,10 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
     progress.advance();
   });
   stats.exact_fallback_pixels = fallbacks;
-  stats.seconds_raster = seconds_since(start);
+  stats.seconds_raster = util::seconds_since(start);
 
   // 2. The depth views some sample reads; the others cost nothing.
-  start = Clock::now();
+  start = util::Clock::now();
   const std::vector<Occluder> occluders = occluders_of(index, table);
   const geometry::Box bounds = scene_bounds(scene);
   const double near = 1e-7 * std::max(index.magnitude(), 1e-300);
@@ -205,13 +205,13 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       progress.advance();
     }
   }
-  stats.seconds_maps = seconds_since(start);
+  stats.seconds_maps = util::seconds_since(start);
 
   // 3. Each sample against the views it reads.
-  start = Clock::now();
+  start = util::Clock::now();
   std::atomic<std::uint64_t> lookups{0};
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
-  parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_rows(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
     std::uint64_t row_lookups = 0;
     for (int i = 0; i < camera.width; ++i) {
@@ -258,7 +258,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
     progress.advance();
   });
   stats.map_lookups = lookups;
-  stats.seconds_decide = seconds_since(start);
+  stats.seconds_decide = util::seconds_since(start);
   return frame;
 }
 

@@ -125,15 +125,15 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const std::size_t lights = scene.lights.size();
-  Progress progress(options.progress);
+  util::Progress progress(options.progress);
 
   progress.phase("bvh", 1);
-  auto start = Clock::now();
+  auto start = util::Clock::now();
   const EmbreeScene rt(index, options.threads);
-  stats.seconds_bvh = seconds_since(start);
+  stats.seconds_bvh = util::seconds_since(start);
 
   // As in the other methods, "decide" includes allocating the frame.
-  start = Clock::now();
+  start = util::Clock::now();
   Frame frame(camera.width, camera.height, lights, options.threads);
   const std::vector<FloatLight> float_light = float_lights(scene);
   const float offset = static_cast<float>(options.ray.epsilon * rt.diagonal());
@@ -141,7 +141,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
   const auto width = static_cast<std::size_t>(camera.width);
   std::atomic<std::uint64_t> shadow_rays{0};
   progress.phase("rays", static_cast<std::uint64_t>(camera.height));
-  parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_rows(camera.height, options.threads, [&](int j) {
     // Primary rays of a row are coherent; Embree's stream API packs them.
     std::vector<RTCRayHit> primary(width);
     primary_rays(camera, j, primary);
@@ -216,7 +216,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
   });
   stats.primary_rays = static_cast<std::uint64_t>(camera.width) * camera.height;
   stats.shadow_rays = shadow_rays;
-  stats.seconds_decide = seconds_since(start);
+  stats.seconds_decide = util::seconds_since(start);
   return frame;
 }
 

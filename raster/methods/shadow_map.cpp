@@ -203,7 +203,7 @@ DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluder
   for (const Occluder& o : occluders)
     if (std::optional<Projected> p = project_occluder(view, o)) projected.push_back(std::move(*p));
   const int bands = (map.size + kBandRows - 1) / kBandRows;
-  parallel_rows(bands, threads, [&](int band) {
+  util::parallel_rows(bands, threads, [&](int band) {
     const int j0 = band * kBandRows, j1 = std::min(map.size, j0 + kBandRows);
     std::vector<double> xs;
     for (const Projected& p : projected)

@@ -103,9 +103,9 @@ Frame render_volume(const geometry::SceneIndex& index,
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const std::size_t lights = scene.lights.size();
 
-  Progress progress(options.progress);
+  util::Progress progress(options.progress);
   progress.phase("volumes", 1);
-  auto start = Clock::now();
+  auto start = util::Clock::now();
   // No caps: an eye ray to its first hit crosses none (geometry/volumes/builder.h);
   // so each side may end as soon as it has left the scene's box, which eye
   // rays never leave before their hit: far less to scan than sides out to
@@ -132,9 +132,9 @@ Frame render_volume(const geometry::SceneIndex& index,
   }
   stats.shadow_polygons = volumes.polygons.size();
   for (std::size_t l = 0; l < lights; ++l) stats.eye_degenerate_lights += eye.degenerate[l];
-  stats.seconds_volumes = seconds_since(start);
+  stats.seconds_volumes = util::seconds_since(start);
 
-  start = Clock::now();
+  start = util::Clock::now();
   SurfaceTable table = surface_table(index);
   const ReachTable reach(table.polygons, scene.lights);
   append_shadow_polygons(volumes, eye, table.polygons);
@@ -142,13 +142,13 @@ Frame render_volume(const geometry::SceneIndex& index,
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
   const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads,
                                               eye.in_shadow, &progress, true, planes);
-  stats.seconds_raster = seconds_since(start);
+  stats.seconds_raster = util::seconds_since(start);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
   stats.seconds_raster_prepare = scan.seconds_prepare;
   stats.shadow_bands_skipped = scan.shadow_bands_skipped;
 
-  start = Clock::now();
+  start = util::Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
   Frame frame(camera.width, camera.height, lights, options.threads);
   std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
@@ -171,7 +171,7 @@ Frame render_volume(const geometry::SceneIndex& index,
     }
   };
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
-  parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_rows(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
     std::uint64_t row_fallbacks = 0, row_recounts = 0;
     for (int i = 0; i < camera.width; ++i) {
@@ -243,7 +243,7 @@ Frame render_volume(const geometry::SceneIndex& index,
   });
   stats.exact_fallback_pixels = fallbacks;
   stats.exact_light_recounts = recounts;
-  stats.seconds_decide = seconds_since(start);
+  stats.seconds_decide = util::seconds_since(start);
   return frame;
 }
 

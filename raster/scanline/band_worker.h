@@ -42,17 +42,17 @@ class Band {
   /// every edge at once: they never move as they grow, and fault in 2 MiB at
   /// a time. With 4 KiB pages, the moves and faults were a tenth of a
   /// 16-light frame on this machine kind.
-  Band(const Scene& scene, ScanlineResult& result, Progress* progress)
+  Band(const Scene& scene, ScanlineResult& result, util::Progress* progress)
       : scene_(scene), result_(result), progress_(progress), flags_(scene.group_start) {
     const std::size_t polygons = scene.polygons.size();
-    reserve_huge(inside_, polygons);
+    util::reserve_huge(inside_, polygons);
     inside_.assign(polygons, 0);
-    reserve_huge(slot_, polygons);
+    util::reserve_huge(slot_, polygons);
     slot_.assign(polygons, 0);
-    reserve_huge(crossings_, scene.by_scan_row.size());
-    reserve_huge(strips_, scene.by_near_row.size());
-    reserve_huge(shadows_, scene.shadow_by_row.size());
-    reserve_huge(live_, scene.shadow_by_row.size());
+    util::reserve_huge(crossings_, scene.by_scan_row.size());
+    util::reserve_huge(strips_, scene.by_near_row.size());
+    util::reserve_huge(shadows_, scene.shadow_by_row.size());
+    util::reserve_huge(live_, scene.shadow_by_row.size());
   }
 
   /// Rows go through the surface pass and the shadow pass a band of this
@@ -203,18 +203,18 @@ class Band {
 
   const Scene& scene_;
   ScanlineResult& result_;
-  Progress* progress_;
+  util::Progress* progress_;
   std::uint64_t spans_ = 0;              // spans shaded by this worker
   std::uint64_t skipped_ = 0;            // (polygon, band) pairs it found behind
-  HugeVector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
+  util::HugeVector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
   int taken_ = 0;                        // bucket rows below this are in the lists
   int next_row_ = -1;                    // where the last chunk ended (-1: none yet)
   std::vector<int> columns_;             // one shadow polygon's crossing columns on the row
-  HugeVector<Strip> strips_;             // the surfaces' strips that meet the band
-  HugeVector<ActiveShadow> shadows_;     // shadow polygons whose span meets the band, in order
-  HugeVector<std::uint32_t> live_;       // those not behind the band
-  HugeVector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
-  HugeVector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
+  util::HugeVector<Strip> strips_;             // the surfaces' strips that meet the band
+  util::HugeVector<ActiveShadow> shadows_;     // shadow polygons whose span meets the band, in order
+  util::HugeVector<std::uint32_t> live_;       // those not behind the band
+  util::HugeVector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
+  util::HugeVector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
   std::vector<std::uint32_t> surfaces_;  // surfaces inside at the current span
   std::vector<DepthEntry> order_;        // the span's depth-ordered list
   std::vector<Vec3> ray_;                // the band's sample directions in camera space, row by row

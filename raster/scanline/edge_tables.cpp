@@ -23,8 +23,8 @@ namespace {
 /// The surfaces' edges by first row of `range` (shadow polygons' edges go
 /// to the shadow pass polygon by polygon instead, see shadow_spans).
 void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, int height,
-                 HugeVector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
-                 HugeVector<int>& last) {
+                 util::HugeVector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
+                 util::HugeVector<int>& last) {
   const auto counted = [&](const TableEdge& e) {
     return !e.shadow && (e.*range).first <= (e.*range).last;
   };
@@ -33,8 +33,8 @@ void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, i
     if (counted(e)) ++bucket[(e.*range).first + 1];
   for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
   // Made afresh every frame, 1-2 MB each with many lights: whole huge pages.
-  reserve_huge(order, bucket[height]);
-  reserve_huge(last, bucket[height]);
+  util::reserve_huge(order, bucket[height]);
+  util::reserve_huge(last, bucket[height]);
   order.assign(bucket[height], 0);
   std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
   for (std::uint32_t k = 0; k < edges.size(); ++k)
@@ -169,7 +169,7 @@ template <class Work>
 void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
   constexpr std::size_t kBlock = 2048;
   const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
-  parallel_rows(blocks, threads, [&](int b) {
+  util::parallel_rows(blocks, threads, [&](int b) {
     const std::size_t begin = static_cast<std::size_t>(b) * kBlock;
     work(begin, std::min(count, begin + kBlock));
   });
@@ -179,7 +179,7 @@ void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
 /// shadow_strips), its span of rows, and the polygons bucketed by first row.
 void shadow_tables(Scene& scene, std::span<const std::size_t> first_edge, unsigned threads) {
   const std::size_t polygons = scene.polygons.size();
-  reserve_huge(scene.shadow_spans, polygons);
+  util::reserve_huge(scene.shadow_spans, polygons);
   scene.shadow_spans.assign(polygons, ShadowSpan{});
   std::uint32_t count = 0;
   for (std::size_t k = 0; k < polygons; ++k) {
@@ -219,8 +219,8 @@ void shadow_tables(Scene& scene, std::span<const std::size_t> first_edge, unsign
   for (const ShadowSpan& span : scene.shadow_spans)
     if (span.first <= span.last) ++bucket[span.first + 1];
   for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
-  reserve_huge(scene.shadow_by_row, bucket[height]);
-  reserve_huge(scene.shadow_by_row_last, bucket[height]);
+  util::reserve_huge(scene.shadow_by_row, bucket[height]);
+  util::reserve_huge(scene.shadow_by_row_last, bucket[height]);
   scene.shadow_by_row.assign(bucket[height], 0);
   scene.shadow_by_row_last.assign(bucket[height], 0);
   std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
@@ -266,8 +266,8 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   const CameraSpace& camera = scene.camera;
   // With many lights there are 100k+ polygons to project and edges to
   // table: shared out, each written to its own slot.
-  HugeVector<std::size_t> room;
-  reserve_huge(room, input.size() + 1);
+  util::HugeVector<std::size_t> room;
+  util::reserve_huge(room, input.size() + 1);
   room.assign(input.size() + 1, 0);
   for (std::size_t k = 0; k < input.size(); ++k)
     room[k + 1] = room[k] + edge_room(input[k].vertices.size());
@@ -282,8 +282,8 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
   const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
-  HugeVector<std::size_t> first_edge;
-  reserve_huge(first_edge, scene.polygons.size() + 1);
+  util::HugeVector<std::size_t> first_edge;
+  util::reserve_huge(first_edge, scene.polygons.size() + 1);
   first_edge.assign(scene.polygons.size() + 1, 0);
   for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
     const ProjectedPolygon& polygon = scene.polygons[k];
@@ -291,7 +291,7 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
     first_edge[k + 1] = first_edge[k] + polygon.edges.size();
   }
   scene.edges.resize(first_edge.back());
-  reserve_huge(scene.cullable, scene.polygons.size());
+  util::reserve_huge(scene.cullable, scene.polygons.size());
   scene.cullable.assign(scene.polygons.size(), 0);
   scene.floors.resize(scene.polygons.size());
   parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {

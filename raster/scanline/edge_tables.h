@@ -135,42 +135,42 @@ struct Scene {
   /// Every polygon's clipped edges, edge_room(vertices) places each, in
   /// huge pages: one block instead of an allocation per polygon (100k+ with
   /// many lights, their heap pages faulted in afresh every frame).
-  UninitializedVector<ProjectedEdge> edge_store;
+  util::UninitializedVector<ProjectedEdge> edge_store;
   /// In huge pages (huge_pages.h): 176 bytes each, 24 MB with 16 lights,
   /// which in 4 KiB pages took about 90 ms of page faults a frame.
-  std::vector<ProjectedPolygon, HugePageAllocator<ProjectedPolygon>> polygons;
+  std::vector<ProjectedPolygon, util::HugePageAllocator<ProjectedPolygon>> polygons;
   /// Filled in parallel by prepare; left uninitialized until then (a
   /// trivial type, so no serial zeroing of 100k+ entries first).
-  UninitializedVector<TableEdge> edges;
+  util::UninitializedVector<TableEdge> edges;
   /// The surfaces' edges sorted by first active row (the y bucket sort).
-  HugeVector<std::uint32_t> by_scan_row;
+  util::HugeVector<std::uint32_t> by_scan_row;
   std::vector<std::size_t>
       scan_bucket;  ///< by_scan_row[scan_bucket[j] .. scan_bucket[j+1]) start at row j
   /// scan.last of by_scan_row's edges, in its order: a worker starting a
   /// chunk of rows reads these front to back to find the edges still active,
   /// instead of reaching into the edge table once per edge started above.
-  HugeVector<int> by_scan_row_last;
+  util::HugeVector<int> by_scan_row_last;
   /// The surfaces' edges by first row of their strips, likewise.
-  HugeVector<std::uint32_t> by_near_row;
+  util::HugeVector<std::uint32_t> by_near_row;
   std::vector<std::size_t> near_bucket;
-  HugeVector<int> by_near_row_last;  ///< near.last of by_near_row's edges
+  util::HugeVector<int> by_near_row_last;  ///< near.last of by_near_row's edges
   /// Shadow polygons go to the shadow pass whole, not edge by edge: each
   /// polygon's edges and strips side by side (ShadowSpan::begin .. end), so
   /// a band's lists hold polygons and no edge is copied band after band.
-  UninitializedVector<ShadowEdge> shadow_edges;
-  UninitializedVector<Strip> shadow_strips;
-  HugeVector<ShadowSpan> shadow_spans;  ///< per polygon (a surface's is empty)
+  util::UninitializedVector<ShadowEdge> shadow_edges;
+  util::UninitializedVector<Strip> shadow_strips;
+  util::HugeVector<ShadowSpan> shadow_spans;  ///< per polygon (a surface's is empty)
   /// Shadow polygons by the first row of their span, in polygon order
   /// within a row; with each one's last row, as for the edges.
-  HugeVector<std::uint32_t> shadow_by_row;
+  util::HugeVector<std::uint32_t> shadow_by_row;
   std::vector<std::size_t> shadow_bucket;
-  HugeVector<int> shadow_by_row_last;
+  util::HugeVector<int> shadow_by_row_last;
   /// Per polygon: a shadow polygon whose depth may be bounded over a band
   /// of rows (band_cull); others are always scanned.
-  HugeVector<std::uint8_t> cullable;
+  util::HugeVector<std::uint8_t> cullable;
   /// Per cullable polygon: its depth floor over its whole bounding box,
   /// widened by a pixel (Band::behind_band's first test).
-  HugeVector<DepthFloor> floors;
+  util::HugeVector<DepthFloor> floors;
   /// Some entry of `cullable` is set (scanline_render sets it once the
   /// caller's choice is applied): otherwise no band needs a depth bound.
   bool any_cullable = false;

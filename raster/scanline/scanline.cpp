@@ -39,12 +39,12 @@ namespace umbra::raster {
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start,
-                               Progress* progress, bool skip_hidden_shadows,
+                               util::Progress* progress, bool skip_hidden_shadows,
                                std::span<const EyePlane> eye_planes) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
-  threads = resolve_threads(threads);
+  threads = util::resolve_threads(threads);
   const auto start = std::chrono::steady_clock::now();
   detail::Scene scene = detail::prepare(frame, polygons, lights, group_start, threads);
   detail::add_eye_planes(eye_planes, scene);
@@ -89,7 +89,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // state) taking bands from the scheduler; parallel_rows rethrows a
   // worker's exception here.
   BandScheduler schedule(bands, workers);
-  parallel_rows(workers, static_cast<unsigned>(workers), [&](int w) {
+  util::parallel_rows(workers, static_cast<unsigned>(workers), [&](int w) {
     detail::Band band(scene, result, progress);
     for (int b = schedule.next(w); b >= 0; b = schedule.next(w))
       band.run(b * kBand, std::min(frame.height, (b + 1) * kBand));

@@ -63,22 +63,22 @@ struct ScanlineResult {
   int width = 0, height = 0;
   std::size_t lights = 0;
   /// Every element of every buffer below is written by the render.
-  UninitializedVector<std::int32_t>
+  util::UninitializedVector<std::int32_t>
       visible;                        ///< surface id per pixel; -1 where the ray hits nothing
-  UninitializedVector<double> depth;  ///< ray parameter t of the visible hit (infinity if none)
+  util::UninitializedVector<double> depth;  ///< ray parameter t of the visible hit (infinity if none)
   /// [pixel * lights + light]: the summed weights of the shadow polygons in
   /// front of the hit, plus, for every twisted group whose flag differs at
   /// the hit from its value at the eye, +1 (set there) or -1 (cleared there);
   /// the count at the eye is the caller's. 0 where the ray hits nothing:
   /// spans without a surface are skipped.
-  UninitializedVector<std::int32_t> count;
+  util::UninitializedVector<std::int32_t> count;
   /// kSurfaceUncertain (alone: everything is decided again), or
   /// kLightsUncertain, or 0 where every answer is final.
-  UninitializedVector<std::uint8_t> uncertain;
+  util::UninitializedVector<std::uint8_t> uncertain;
   /// Per pixel, light_bit of every light whose count may be wrong: a shadow
   /// polygon of it too close to call against the visible point, or the
   /// pixel too near one of its edges. 0 where uncertain lacks kLightsUncertain.
-  UninitializedVector<std::uint64_t> light_mask;
+  util::UninitializedVector<std::uint64_t> light_mask;
   /// Spans shaded: runs of pixels between consecutive crossings of surface
   /// edges that hold a surface (shadow polygons' edges cut no spans).
   std::uint64_t spans = 0;
@@ -98,7 +98,7 @@ struct ScanlineResult {
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start = {},
-                               Progress* progress = nullptr, bool skip_hidden_shadows = true,
+                               util::Progress* progress = nullptr, bool skip_hidden_shadows = true,
                                std::span<const EyePlane> eye_planes = {});
 
 }  // namespace umbra::raster

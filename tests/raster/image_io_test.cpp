@@ -81,7 +81,7 @@ TEST_F(ImageIoTest, ExrRoundTripWithTwelveLightsKeepsChannelsByName) {
   const auto channel = [&](const std::string& name) {
     const int c = spec.channelindex(name);
     EXPECT_GE(c, 0) << name;
-    PixelPlane plane;
+    util::PixelPlane plane;
     for (std::size_t p = 0; p < 35; ++p) plane.push_back(pixels[p * spec.nchannels + c]);
     return plane;
   };
@@ -156,12 +156,12 @@ TEST_F(ImageIoTest, UnknownExtensionThrowsAndLeavesNoFile) {
     try {
       write_frame(frame, path);
       ADD_FAILURE() << "no exception for " << name;
-    } catch (const geometry::InputError& e) {
+    } catch (const util::InputError& e) {
       EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("use .png or .exr"), std::string::npos) << e.what();
     }
   }
-  EXPECT_THROW(write_rgb_png(dir_ / "mask.exr", 1, 1, {0, 0, 0}), geometry::InputError);
+  EXPECT_THROW(write_rgb_png(dir_ / "mask.exr", 1, 1, {0, 0, 0}), util::InputError);
   EXPECT_TRUE(listing().empty());
 }
 
@@ -173,11 +173,11 @@ TEST_F(ImageIoTest, WritingIntoAMissingDirectoryThrowsAndLeavesNoFile) {
     try {
       write_frame(frame, path);
       ADD_FAILURE() << "no exception for " << name;
-    } catch (const geometry::InputError& e) {
+    } catch (const util::InputError& e) {
       EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
     }
   }
-  EXPECT_THROW(write_rgb_png(missing / "mask.png", 1, 1, {0, 0, 0}), geometry::InputError);
+  EXPECT_THROW(write_rgb_png(missing / "mask.png", 1, 1, {0, 0, 0}), util::InputError);
   EXPECT_FALSE(fs::exists(missing));
   EXPECT_TRUE(listing().empty());
 }
@@ -187,7 +187,7 @@ TEST_F(ImageIoTest, TargetThatIsADirectoryThrowsAndLeavesNoTemporary) {
   // rename fails, and neither the temporary nor a changed target remains.
   const fs::path path = dir_ / "taken.exr";
   fs::create_directory(path);
-  EXPECT_THROW(write_frame(patterned_frame(2, 2, 1), path), geometry::InputError);
+  EXPECT_THROW(write_frame(patterned_frame(2, 2, 1), path), util::InputError);
   EXPECT_TRUE(fs::is_directory(path));
   EXPECT_EQ(listing().size(), 1u);
 }
@@ -207,20 +207,20 @@ TEST_F(ImageIoTest, ReadingAFileWithoutShadowZeroThrows) {
   Frame frame(3, 2, 0);  // no lights: R, G, B, depth only
   const fs::path exr = dir_ / "nolights.exr";
   write_frame(frame, exr);
-  EXPECT_THROW(read_shadow_channels(exr), geometry::InputError);
+  EXPECT_THROW(read_shadow_channels(exr), util::InputError);
 
   const fs::path png = dir_ / "beauty.png";
   write_frame(patterned_frame(3, 2, 1), png);
   try {
     read_shadow_channels(png);
     ADD_FAILURE() << "no exception for a PNG";
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("shadow.0"), std::string::npos) << e.what();
   }
 }
 
 TEST_F(ImageIoTest, ReadingAMissingOrCorruptFileThrows) {
-  EXPECT_THROW(read_shadow_channels(dir_ / "absent.exr"), geometry::InputError);
+  EXPECT_THROW(read_shadow_channels(dir_ / "absent.exr"), util::InputError);
   const fs::path garbage = dir_ / "garbage.exr";
   {
     std::FILE* f = std::fopen(garbage.c_str(), "wb");
@@ -228,7 +228,7 @@ TEST_F(ImageIoTest, ReadingAMissingOrCorruptFileThrows) {
     std::fputs("not an image", f);
     std::fclose(f);
   }
-  EXPECT_THROW(read_shadow_channels(garbage), geometry::InputError);
+  EXPECT_THROW(read_shadow_channels(garbage), util::InputError);
 }
 
 TEST_F(ImageIoTest, AGapInTheShadowChannelsThrows) {
@@ -246,7 +246,7 @@ TEST_F(ImageIoTest, AGapInTheShadowChannelsThrows) {
   try {
     read_shadow_channels(path);
     ADD_FAILURE() << "no exception for a gap";
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no shadow.1"), std::string::npos) << e.what();
   }
 }
@@ -265,7 +265,7 @@ void expect_failed_write_leaves_previous(const fs::path& dir, const fs::path& pa
     try {
       write();
       ADD_FAILURE() << "the write claimed success";
-    } catch (const geometry::InputError& e) {
+    } catch (const util::InputError& e) {
       EXPECT_EQ(std::string(e.what()), path.string() + ": cannot write file: File too large");
     }
   }
@@ -328,7 +328,7 @@ void write_exr_with_data_window(const fs::path& path, int w, int h, int x, int y
 std::string read_error(const fs::path& path) {
   try {
     read_shadow_channels(path);
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     return e.what();
   }
   return "no error";
@@ -381,7 +381,7 @@ TEST_F(ImageIoTest, DevicesAndHugeClaimsAreRefusedBeforeReading) {
   try {
     decode_shadow_channels(bytes, name, 1000);
     ADD_FAILURE() << "no error";
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               name + ": 40x30 pixels is more than the 1000 pixels a render can have");
   }

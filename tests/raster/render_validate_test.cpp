@@ -295,10 +295,10 @@ TEST(Validate, ImageOfTheWrongSizeOrLightCountIsAnInputError) {
   ShadowChannels c = channels_of(render(scene, {.method = Method::exact, .threads = 1}));
   ShadowChannels two_lights = c;
   two_lights.shadow.push_back(c.shadow[0]);
-  EXPECT_THROW(validate_render(scene, two_lights, {}), geometry::InputError);
+  EXPECT_THROW(validate_render(scene, two_lights, {}), util::InputError);
   ShadowChannels narrow = c;
   narrow.width = 32;
-  EXPECT_THROW(validate_render(scene, narrow, {}), geometry::InputError);
+  EXPECT_THROW(validate_render(scene, narrow, {}), util::InputError);
 }
 
 }  // namespace

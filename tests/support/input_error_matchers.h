@@ -12,7 +12,7 @@ template <typename F>
 std::string error_of(F&& f) {
   try {
     f();
-  } catch (const InputError& e) {
+  } catch (const util::InputError& e) {
     return e.what();
   }
   ADD_FAILURE() << "no InputError thrown";

@@ -34,9 +34,9 @@ TEST(AtomicFiles, FailedWriteLeavesThePreviousFilesAndNoTemporary) {
     ASSERT_TRUE(limit.active());
     // The first file fits, the second does not: neither may appear.
     try {
-      write_all_or_nothing({{dir / "b.txt", "small"}, {dir / "a.json", std::string(5000, 'x')}});
+      util::write_all_or_nothing({{dir / "b.txt", "small"}, {dir / "a.json", std::string(5000, 'x')}});
       ADD_FAILURE() << "the write claimed success";
-    } catch (const InputError& e) {
+    } catch (const util::InputError& e) {
       EXPECT_EQ(std::string(e.what()),
                 (dir / "a.json").string() + ": cannot write file: File too large");
     }
@@ -51,7 +51,7 @@ TEST(AtomicFiles, WritesEveryByteOfALargeFile) {
   const fs::path dir = work_dir("large");
   std::string bytes(3 * 1024 * 1024 + 7, '\0');
   for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>(i * 131 % 251);
-  write_all_or_nothing(dir / "big.bin", bytes);
+  util::write_all_or_nothing(dir / "big.bin", bytes);
   EXPECT_EQ(read(dir / "big.bin"), bytes);
 }
 

@@ -19,8 +19,8 @@ std::uintptr_t address(const void* p) { return reinterpret_cast<std::uintptr_t>(
 
 TEST(HugePages, LargePlanesAreAlignedToHugePagesAndHoldTheirValues) {
   // A 1280x720 float plane: 3.7 MB, above the threshold.
-  PixelPlane plane(1280 * 720);
-  ASSERT_GE(plane.size() * sizeof(float), kHugePageMinBytes);
+  util::PixelPlane plane(1280 * 720);
+  ASSERT_GE(plane.size() * sizeof(float), util::kHugePageMinBytes);
   EXPECT_EQ(address(plane.data()) % kTwoMiB, 0u);
   // Value-initialized, then written in full and read back.
   EXPECT_EQ(std::count(plane.begin(), plane.end(), 0.0f), static_cast<long>(plane.size()));
@@ -33,17 +33,17 @@ TEST(HugePages, LargePlanesAreAlignedToHugePagesAndHoldTheirValues) {
   EXPECT_EQ(plane[921599], 921599.0f);
   EXPECT_EQ(plane[921600], -1.0f);
   // Copies hold the same values in their own block.
-  const PixelPlane copy = plane;
+  const util::PixelPlane copy = plane;
   EXPECT_NE(copy.data(), plane.data());
   EXPECT_EQ(copy, plane);
 }
 
 TEST(HugePages, SmallBlocksAndShrinkingBackWork) {
-  PixelPlane small(100, 2.5f);
+  util::PixelPlane small(100, 2.5f);
   EXPECT_EQ(small[99], 2.5f);
   // Shrinking below the threshold and releasing takes the same path back
   // (deallocate is given the size allocate was).
-  PixelPlane big(kHugePageMinBytes / sizeof(float) + 1, 1.0f);
+  util::PixelPlane big(util::kHugePageMinBytes / sizeof(float) + 1, 1.0f);
   big.resize(10);
   big.shrink_to_fit();
   EXPECT_EQ(big.size(), 10u);
@@ -51,7 +51,7 @@ TEST(HugePages, SmallBlocksAndShrinkingBackWork) {
 }
 
 TEST(HugePages, UninitializedVectorsUseThemToo) {
-  UninitializedVector<std::uint64_t> masks;
+  util::UninitializedVector<std::uint64_t> masks;
   masks.resize(1 << 20);  // 8 MiB
   EXPECT_EQ(address(masks.data()) % kTwoMiB, 0u);
   masks[(1 << 20) - 1] = 7;
@@ -60,15 +60,15 @@ TEST(HugePages, UninitializedVectorsUseThemToo) {
 
 TEST(HugePages, ReserveHugeGivesSmallListsAWholeAlignedPageThatNeverMoves) {
   // A worker's per-polygon array: 134k bytes, far below the threshold.
-  HugeVector<std::uint8_t> flags;
-  reserve_huge(flags, 134000);
-  EXPECT_GE(flags.capacity() * sizeof(std::uint8_t), kHugePageMinBytes);
+  util::HugeVector<std::uint8_t> flags;
+  util::reserve_huge(flags, 134000);
+  EXPECT_GE(flags.capacity() * sizeof(std::uint8_t), util::kHugePageMinBytes);
   EXPECT_EQ(address(flags.data()) % kTwoMiB, 0u);
   flags.assign(134000, 3);
   EXPECT_EQ(flags.back(), 3);
   // An upper bound reserved up front: growing to it never moves the list.
-  HugeVector<std::uint64_t> list;
-  reserve_huge(list, 1 << 19);  // 4 MiB
+  util::HugeVector<std::uint64_t> list;
+  util::reserve_huge(list, 1 << 19);  // 4 MiB
   EXPECT_GE(list.capacity(), std::size_t{1} << 19);
   const std::uint64_t* first = list.data();
   for (std::uint64_t k = 0; k < (1 << 19); ++k) list.push_back(k);

@@ -36,13 +36,13 @@ void write(const fs::path& path, const std::string& text) {
 TEST(InputFile, ReadsARegularFileWhole) {
   const fs::path file = work_dir("regular") / "a.txt";
   write(file, std::string(200000, 'x') + "end");
-  EXPECT_EQ(read_input_file(file, "scene"), std::string(200000, 'x') + "end");
+  EXPECT_EQ(util::read_input_file(file, "scene"), std::string(200000, 'x') + "end");
 }
 
 TEST(InputFile, ReadsAnEmptyFile) {
   const fs::path file = work_dir("empty") / "a.txt";
   write(file, "");
-  EXPECT_EQ(read_input_file(file, "scene"), "");
+  EXPECT_EQ(util::read_input_file(file, "scene"), "");
 }
 
 TEST(InputFile, RefusesAFifoWithoutBlocking) {
@@ -69,21 +69,21 @@ TEST(InputFile, RefusesALinkToDevUrandomAsAMesh) {
 
 TEST(InputFile, RefusesADirectory) {
   const fs::path dir = work_dir("dir");
-  EXPECT_TRUE(contains(error_of([&] { read_input_file(dir, "mesh"); }), "is a directory"));
+  EXPECT_TRUE(contains(error_of([&] { util::read_input_file(dir, "mesh"); }), "is a directory"));
 }
 
 TEST(InputFile, RefusesAFileOverTheLimitBeforeReading) {
   const fs::path file = work_dir("limit") / "a.off";
   write(file, "12345678901");
-  EXPECT_EQ(error_of([&] { read_input_file(file, "mesh", 10); }),
+  EXPECT_EQ(error_of([&] { util::read_input_file(file, "mesh", 10); }),
             file.string() + ": mesh file is 11 bytes; the limit is 10 bytes");
-  EXPECT_EQ(read_input_file(file, "mesh", 11), "12345678901");
+  EXPECT_EQ(util::read_input_file(file, "mesh", 11), "12345678901");
 }
 
 TEST(InputFile, ProcFilesOfSizeZeroAreReadWithinTheLimit) {
   // /proc files report size 0: the limit holds while reading.
-  EXPECT_FALSE(read_input_file("/proc/self/status", "scene").empty());
-  EXPECT_TRUE(contains(error_of([] { read_input_file("/proc/self/status", "scene", 8); }),
+  EXPECT_FALSE(util::read_input_file("/proc/self/status", "scene").empty());
+  EXPECT_TRUE(contains(error_of([] { util::read_input_file("/proc/self/status", "scene", 8); }),
                        "scene file is more than "));
 }
 

@@ -14,7 +14,7 @@ TEST(ParallelFor, CallsEveryItemOnce) {
   for (const unsigned threads : {0u, 1u, 2u, 3u, 8u}) {
     for (const std::size_t count : {0u, 1u, 2u, 5u, 100u}) {
       std::vector<std::atomic<int>> calls(count);
-      parallel_for(count, threads, [&](std::size_t i) { ++calls[i]; });
+      util::parallel_for(count, threads, [&](std::size_t i) { ++calls[i]; });
       for (std::size_t i = 0; i < count; ++i)
         EXPECT_EQ(calls[i], 1) << "item " << i << " of " << count << ", " << threads << " threads";
     }
@@ -23,14 +23,14 @@ TEST(ParallelFor, CallsEveryItemOnce) {
 
 TEST(ParallelFor, OneThreadRunsTheItemsInOrderOnTheCaller) {
   std::vector<std::size_t> order;
-  parallel_for(6, 1, [&](std::size_t i) { order.push_back(i); });
+  util::parallel_for(6, 1, [&](std::size_t i) { order.push_back(i); });
   EXPECT_EQ(order, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
 }
 
 TEST(ParallelFor, RethrowsAWorkersException) {
   for (const unsigned threads : {1u, 2u, 3u}) {
     std::atomic<int> after{0};
-    EXPECT_THROW(parallel_for(50, threads,
+    EXPECT_THROW(util::parallel_for(50, threads,
                               [&](std::size_t i) {
                                 if (i == 7) throw std::runtime_error("item 7");
                                 ++after;
@@ -43,7 +43,7 @@ TEST(ParallelFor, RethrowsAWorkersException) {
 
 TEST(ParallelFor, RethrowsTheExceptionOfTheOnlyFailingItem) {
   try {
-    parallel_for(20, 3, [](std::size_t i) {
+    util::parallel_for(20, 3, [](std::size_t i) {
       if (i == 13) throw std::out_of_range("item 13");
     });
     FAIL() << "nothing thrown";

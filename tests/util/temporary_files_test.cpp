@@ -31,8 +31,8 @@ void expect_removed_on(int signal_number, const std::string& name) {
   // The child calls no allocating function: other threads of the test
   // runner may have held malloc's lock when it was forked.
   const int status = umbra::test::run_in_child([&] {
-    remove_temporaries_on_signals();
-    const TemporaryFileGuard guard(tmp);
+    util::remove_temporaries_on_signals();
+    const util::TemporaryFileGuard guard(tmp);
     if (!guard.registered()) return 10;
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT, 0644);
     if (fd < 0 || ::write(fd, "half", 4) != 4) return 12;
@@ -55,8 +55,8 @@ TEST(TemporaryFiles, ReleasedGuardLeavesTheFileAlone) {
   const fs::path dir = work_dir("released");
   const fs::path path = dir / "result.png";
   const int status = umbra::test::run_in_child([&] {
-    remove_temporaries_on_signals();
-    { const TemporaryFileGuard guard(path); }
+    util::remove_temporaries_on_signals();
+    { const util::TemporaryFileGuard guard(path); }
     const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
     if (fd < 0) return 12;
     std::raise(SIGTERM);
@@ -67,15 +67,15 @@ TEST(TemporaryFiles, ReleasedGuardLeavesTheFileAlone) {
 }
 
 TEST(TemporaryFiles, TableHoldsSixtyFourAndRefusesMore) {
-  std::vector<std::unique_ptr<TemporaryFileGuard>> guards;
+  std::vector<std::unique_ptr<util::TemporaryFileGuard>> guards;
   for (int i = 0; i < 64; ++i) {
-    guards.push_back(std::make_unique<TemporaryFileGuard>("/tmp/umbra-t" + std::to_string(i)));
+    guards.push_back(std::make_unique<util::TemporaryFileGuard>("/tmp/umbra-t" + std::to_string(i)));
     EXPECT_TRUE(guards.back()->registered()) << i;
   }
-  EXPECT_FALSE(TemporaryFileGuard("/tmp/umbra-t64").registered());
+  EXPECT_FALSE(util::TemporaryFileGuard("/tmp/umbra-t64").registered());
   guards.pop_back();
-  EXPECT_TRUE(TemporaryFileGuard("/tmp/umbra-t64").registered());
-  EXPECT_FALSE(TemporaryFileGuard(std::string(5000, 'x')).registered());
+  EXPECT_TRUE(util::TemporaryFileGuard("/tmp/umbra-t64").registered());
+  EXPECT_FALSE(util::TemporaryFileGuard(std::string(5000, 'x')).registered());
 }
 
 }  // namespace

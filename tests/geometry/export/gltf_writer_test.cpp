@@ -165,7 +165,7 @@ TEST(VolumeExportGltfErrors, CoordinateBeyondFloatRangeIsRefusedAndNothingIsWrit
   try {
     write_volumes(volumes, path);
     ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
+  } catch (const util::InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               path.string() + ": a vertex of face 0 does not fit a float32 glTF position; use .ply");
   }

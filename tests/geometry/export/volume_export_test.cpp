@@ -215,7 +215,7 @@ TEST_F(VolumeExport, SidecarOnlyForFormatsWithoutAttributes) {
   EXPECT_EQ(volume_sidecar_path("a/vol.ply"), std::nullopt);
   EXPECT_EQ(volume_sidecar_path("a/vol.obj"), fs::path("a/vol.obj.json"));
   EXPECT_EQ(volume_sidecar_path("a/vol.Off"), fs::path("a/vol.Off.json"));
-  EXPECT_THROW(volume_sidecar_path("vol.stl"), InputError);
+  EXPECT_THROW(volume_sidecar_path("vol.stl"), util::InputError);
 }
 
 TEST_F(VolumeExport, UnknownExtensionNamesThePathAndWritesNothing) {
@@ -223,7 +223,7 @@ TEST_F(VolumeExport, UnknownExtensionNamesThePathAndWritesNothing) {
   try {
     write_volumes(hand_built_volumes(), file);
     FAIL() << "no InputError";
-  } catch (const InputError& e) {
+  } catch (const util::InputError& e) {
     EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(".stl"), std::string::npos) << e.what();
   }
@@ -232,7 +232,7 @@ TEST_F(VolumeExport, UnknownExtensionNamesThePathAndWritesNothing) {
 
 TEST_F(VolumeExport, MissingDirectoryLeavesNothing) {
   for (const std::string name : {"vol.ply", "vol.obj", "vol.off"}) {
-    EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "missing" / name), InputError) << name;
+    EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "missing" / name), util::InputError) << name;
   }
   EXPECT_TRUE(files_in_dir().empty());
 }
@@ -244,7 +244,7 @@ TEST_F(VolumeExport, MissingDirectoryLeavesNothing) {
 TEST_F(VolumeExport, FailedSidecarRemovesTheMeshToo) {
   fs::create_directory(dir_ / "vol.obj.json");
   fs::create_directory(dir_ / "vol.obj.json" / "keep");  // a non-empty directory cannot be replaced
-  EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "vol.obj"), InputError);
+  EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "vol.obj"), util::InputError);
   EXPECT_EQ(files_in_dir(), std::vector<std::string>{"vol.obj.json"});
   EXPECT_TRUE(fs::is_directory(dir_ / "vol.obj.json" / "keep"));
 }
@@ -252,7 +252,7 @@ TEST_F(VolumeExport, FailedSidecarRemovesTheMeshToo) {
 TEST_F(VolumeExport, TargetThatIsADirectoryLeavesNoTemporary) {
   fs::create_directory(dir_ / "vol.ply");
   fs::create_directory(dir_ / "vol.ply" / "keep");
-  EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "vol.ply"), InputError);
+  EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "vol.ply"), util::InputError);
   EXPECT_EQ(files_in_dir(), std::vector<std::string>{"vol.ply"});
 }
 

@@ -33,7 +33,7 @@ fs::path temp_dir(const std::string& name) {
 std::string error_of(const std::string& bytes, const fs::path& file) {
   try {
     parse_gltf_scene(bytes, file);
-  } catch (const InputError& e) {
+  } catch (const util::InputError& e) {
     return e.what();
   }
   ADD_FAILURE() << "no InputError thrown";
@@ -279,7 +279,7 @@ TEST(GltfIoErrors, MissingExternalBin) {
   const std::string e = [&] {
     try {
       load_scene(dir / "s.gltf");
-    } catch (const InputError& err) {
+    } catch (const util::InputError& err) {
       return std::string(err.what());
     }
     return std::string("no error");
@@ -382,7 +382,7 @@ TEST(GltfIoErrors, JsonSceneNamesTheModelThenTheGltfPath) {
   try {
     load_scene(dir / "s.json");
     ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
+  } catch (const util::InputError& e) {
     EXPECT_EQ(std::string(e.what()), (dir / "s.json").string() + ": models[0].mesh: " +
                                          (dir / "bad.gltf").string() +
                                          ": accessors[0]: 4 elements from byteOffset 0 run past "

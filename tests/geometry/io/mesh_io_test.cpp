@@ -500,7 +500,7 @@ TEST(MeshIoAssimpModels, EveryFileLoadsOrThrowsInputError) {
         }
         for (const Vec3& p : soup.vertices) ASSERT_TRUE(is_finite(p)) << entry.path();
         ++loaded;
-      } catch (const InputError& e) {
+      } catch (const util::InputError& e) {
         EXPECT_TRUE(starts_with(e.what(), entry.path().string())) << e.what();
         ++refused;
       } catch (const std::exception& e) {

@@ -50,7 +50,7 @@ Counts walk(const fs::path& root, std::size_t closure_limit) {
     PolygonSoup soup;
     try {
       soup = read_polygon_soup(file);
-    } catch (const InputError& e) {
+    } catch (const util::InputError& e) {
       ++counts.input_errors;
       const std::string what = e.what();
       EXPECT_NE(what.find(file.filename().string()), std::string::npos)

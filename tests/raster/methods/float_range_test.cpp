@@ -41,7 +41,7 @@ std::string render_error(const geometry::Scene& scene, Method method) {
   options.threads = 1;
   try {
     render(scene, options);
-  } catch (const geometry::InputError& e) {
+  } catch (const util::InputError& e) {
     return e.what();
   }
   return "no error";

@@ -1,0 +1,37 @@
+#pragma once
+// Indexed faces as mesh files: binary PLY with double positions and int
+// face properties, OBJ and OFF with the shortest text that reads back to
+// each double. The exporters (shadow volumes, footprints) add their own
+// attributes and sidecars.
+#include <geometry/export/indexed_faces.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace umbra::geometry {
+
+/// One int property per face, `values[i]` for face i.
+struct FaceAttribute {
+  std::string name;
+  std::vector<std::int32_t> values;
+};
+
+/// Binary little-endian PLY: `comment` lines, vertices as `double x, y, z`,
+/// faces as `vertex_indices` (uchar counts, uint where a face has more than
+/// 255 vertices) followed by the attributes in order. Throws
+/// std::invalid_argument when an index does not fit a 32-bit int.
+std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> comments,
+                      std::span<const FaceAttribute> attributes);
+
+/// OBJ: one comment line, `v x y z` and `f i j k ...` (1-based).
+std::string obj_text(const IndexedFaces& indexed, const std::string& comment);
+
+/// OFF without comments: not every OFF reader accepts them.
+std::string off_text(const IndexedFaces& indexed);
+
+/// The shortest text that reads back to exactly `value` (std::to_chars).
+void append_double(std::string& out, double value);
+
+}  // namespace umbra::geometry
