@@ -92,11 +92,6 @@ Sign angle_sign(const Vec3& o, const Vec3& a, const Vec3& b);
 }  // namespace umbra::geometry
 
 namespace umbra::geometry {
-/// The parameter t where the ray eye + t·d meets plane (a, b, c) (not parallel
-/// to d), within a few ulps: computed from the exact determinants. For
-/// picking candidates only; decisions use the predicates above.
-double ray_plane_parameter(const Vec3& eye, const Vec3& d, const Vec3& a, const Vec3& b,
-                           const Vec3& c);
 /// True when directions u and v are parallel (or one is zero), exactly.
 bool parallel(const Vec3& u, const Vec3& v);
 /// True when the segment from a to b runs parallel to direction d (or

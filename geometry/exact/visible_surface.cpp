@@ -48,8 +48,7 @@ TriangleMeet meet_triangle(const SceneIndex& index, const IndexedPolygon& p, con
     int nonzero = 0;
     bool agree = true;
     for (int i = 0; i < 3; ++i) {
-      const Sign s = orientation(ray.origin, dir,
-                                 HPoint::point(index.vertex(p, t.local[i])),
+      const Sign s = orientation(ray.origin, dir, HPoint::point(index.vertex(p, t.local[i])),
                                  HPoint::point(index.vertex(p, t.local[(i + 1) % 3])));
       if (s == Sign::zero) continue;
       if (nonzero != 0 && to_int(s) != nonzero) agree = false;
@@ -64,7 +63,8 @@ TriangleMeet meet_triangle(const SceneIndex& index, const IndexedPolygon& p, con
 enum class PlaneMeet { ahead, not_ahead, in_plane };
 
 PlaneMeet meet_plane(const Vec3& a, const Vec3& b, const Vec3& c, const SampleRay& ray) {
-  const Sign g = orientation(a, HPoint::point(b), HPoint::point(c), HPoint::at_infinity(ray.direction));
+  const Sign g =
+      orientation(a, HPoint::point(b), HPoint::point(c), HPoint::at_infinity(ray.direction));
   const Sign f = orientation(a, b, c, ray.origin);
   if (g == Sign::zero) return f == Sign::zero ? PlaneMeet::in_plane : PlaneMeet::not_ahead;
   // t = -f/g > 0 iff f and g have opposite signs (f = 0: t = 0, not ahead).
@@ -123,7 +123,8 @@ std::optional<SurfaceHit> first_hit(const SceneIndex& index, const SampleRay& ra
   bool edge_at_best = contacts[0].edge;
   for (std::size_t k = 1; k < contacts.size(); ++k) {
     const HitTriangle a = plane_of(contacts[k]), b = plane_of(contacts[best]);
-    const Sign cmp = compare_ray_parameters(ray.origin, ray.direction, a.a, a.b, a.c, b.a, b.b, b.c);
+    const Sign cmp =
+        compare_ray_parameters(ray.origin, ray.direction, a.a, a.b, a.c, b.a, b.b, b.c);
     if (cmp == Sign::negative) {
       best = k;
       edge_at_best = contacts[k].edge;

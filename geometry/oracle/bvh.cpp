@@ -6,15 +6,6 @@
 
 namespace umbra::geometry {
 
-void Box::extend(const Vec3& p) {
-  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-}
-void Box::extend(const Box& b) {
-  extend(b.lo);
-  extend(b.hi);
-}
-
 Bvh::Bvh(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
   order_.resize(boxes_.size());
   for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;

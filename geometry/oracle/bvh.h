@@ -2,21 +2,12 @@
 // A bounding-volume hierarchy over axis-aligned boxes that only picks
 // candidates: its float tests are conservative (boxes are widened by more
 // than the rounding error of the tests), and exact predicates decide.
-#include <geometry/vec3.h>
+#include <geometry/box.h>
 
 #include <cstdint>
 #include <vector>
 
 namespace umbra::geometry {
-
-struct Box {
-  Vec3 lo{1e308, 1e308, 1e308};
-  Vec3 hi{-1e308, -1e308, -1e308};
-  void extend(const Vec3& p);
-  void extend(const Box& b);
-  Vec3 centre() const { return (lo + hi) * 0.5; }
-  bool empty() const { return lo.x > hi.x; }
-};
 
 class Bvh {
  public:

@@ -17,11 +17,8 @@ SceneIndex::SceneIndex(const Scene& scene) : scene_(&scene) {
       boxes.push_back(box);
       polygons_.push_back({m, p, std::move(surface), model.casts_shadows});
     }
-    for (const Vec3& v : model.vertices) bounds_.extend(v);
   }
-  bounds_.extend(scene.camera.eye);
-  for (const Light& light : scene.lights)
-    if (light.type == LightType::point) bounds_.extend(light.position);
+  bounds_ = scene_bounds(scene);
   for (int a = 0; a < 3; ++a)
     magnitude_ = std::max({magnitude_, std::abs(bounds_.lo[a]), std::abs(bounds_.hi[a])});
   bvh_ = Bvh(std::move(boxes));

@@ -1,3 +1,4 @@
+#include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/exact/segment_crossing.h>
 #include <geometry/oracle/shadow_oracle.h>

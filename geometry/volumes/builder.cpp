@@ -290,7 +290,7 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
   const Scene& scene = share.scene;
   const Light& light = scene.lights[li];
   const HPoint lp = light_point(light);
-  const LightReach reach = light_reach(scene, share.bounds, light);
+  const VolumeReach reach = volume_reach(scene, share.bounds, light);
   LightVolume out;
   VolumeStats& stats = out.stats;
   stats.light = li;
@@ -307,7 +307,7 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
     const std::vector<PolygonRole> roles = polygon_roles(model, tables.surfaces, lp);
     std::vector<std::uint32_t> casting;
     for (std::uint32_t p = 0; p < roles.size(); ++p)
-      if (roles[p].facing != 0) casting.push_back(p);
+      if (roles[p].facing != Sign::zero) casting.push_back(p);
     if (casting.empty()) continue;
     const std::vector<ContourEdge> contour = contour_edges(tables.edges, roles);
 
@@ -337,16 +337,16 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
                        leave_box ? &share.bounds : nullptr, share.margin, out);
 
     for (const ContourEdge& e : contour) {
-      volume.side(e.from, e.to, e.polygon, e.edge, e.weight, -1);
+      volume.side(e.from, e.to, e.polygon, e.edge, e.nb_c, -1);
       ++stats.contour_edges;
-      if (e.weight == 1)
+      if (e.nb_c == 1)
         ++stats.boundary_contour_edges;
       else
         ++stats.silhouette_contour_edges;
     }
     for (std::uint32_t p : casting) {
       if (!roles[p].twisted) {
-        if (options.caps) volume.caps(p, roles[p].facing, -roles[p].facing, -1);
+        if (options.caps) volume.caps(p, to_int(roles[p].facing), -to_int(roles[p].facing), -1);
         continue;
       }
       const auto group = static_cast<std::int32_t>(out.twisted.size());

@@ -39,8 +39,8 @@ struct VolumeOptions {
 };
 
 /// For every light and every shadow-casting model:
-/// - one side polygon (type 2) per contour edge with the edge's weight as
-///   nb_c (contour.h), polygons that are L-twisted left out of the weights;
+/// - one side polygon (type 2) per contour edge with the edge's nb_c as
+///   nb_c (contour.h), polygons that are L-twisted left out of the nb_c values;
 /// - for every L-twisted polygon, its own volume: a side polygon on each of
 ///   its edges and its caps, all `twisted`, sharing one group;
 /// - with options.caps, type 1 and type 3 caps: nb_c = facing and -facing;

@@ -35,20 +35,20 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
       // very sign, fan_orientation's own call. Meshes are mostly triangles,
       // and every light asks each one.
       if (points.size() == 3) {
-        roles[p].facing = to_int(side);
+        roles[p].facing = side;
         continue;
       }
     }
     if (points.size() >= 4 && l_twisted(points, light)) {
-      roles[p] = {1, true};
+      roles[p] = {Sign::positive, true};
     } else if (surface.shape == PolygonShape::planar) {
-      roles[p].facing = to_int(fan_orientation(points, light));
+      roles[p].facing = fan_orientation(points, light);
     } else {
       const Sign facing = projected_facing(points, light);
       if (folds_seen_from(points, light, facing)) {
-        roles[p] = {1, true};  // folded or wrapped: parity, like a twisted polygon
+        roles[p] = {Sign::positive, true};  // folded or wrapped: parity, like a twisted polygon
       } else {
-        roles[p].facing = to_int(facing);
+        roles[p].facing = facing;
       }
     }
   }
@@ -67,19 +67,19 @@ std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
                                        const std::vector<PolygonRole>& roles) {
   std::vector<ContourEdge> result;
   for (std::size_t e = 0; e < edges.edges.size(); ++e) {
-    int weight = 0;  // along the edge as first listed
+    int nb_c = 0;  // along the edge as first listed
     for (std::uint32_t u = edges.use_begin[e]; u < edges.use_begin[e + 1]; ++u) {
       const EdgeTable::Use& use = edges.uses[u];
       const PolygonRole& role = roles[use.polygon];
-      if (!role.twisted) weight -= role.facing * use.along;
+      if (!role.twisted) nb_c -= to_int(role.facing) * use.along;
     }
-    if (weight == 0) continue;
+    if (nb_c == 0) continue;
     const EdgeTable::Edge& first = edges.edges[e];
-    // Directed so that the weight is positive.
-    if (weight > 0)
-      result.push_back({first.from, first.to, weight, first.polygon, first.edge});
+    // Directed so that the nb_c is positive.
+    if (nb_c > 0)
+      result.push_back({first.from, first.to, nb_c, first.polygon, first.edge});
     else
-      result.push_back({first.to, first.from, -weight, first.polygon, first.edge});
+      result.push_back({first.to, first.from, -nb_c, first.polygon, first.edge});
   }
   return result;
 }

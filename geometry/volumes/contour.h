@@ -1,8 +1,8 @@
 #pragma once
 // Facing and contour edges of a model seen from a light, decided exactly.
 //
-// The weight of an edge generalises Bergeron's Nb_C to any number of
-// polygons on it (edge multiplicity): every polygon P using the edge adds
+// An edge's nb_c is Bergeron's Nb_C generalised to any number of polygons on
+// it (edge multiplicity): every polygon P using the edge adds
 // -facing(P)·s, where s = +1 when P runs along the edge in the direction
 // we look at it and -1 otherwise, and facing(P) = +1 when P's vertices run
 // counter-clockwise seen from the light, -1 clockwise, 0 when the light lies
@@ -29,19 +29,20 @@ namespace umbra::geometry {
 Sign polygon_facing(const Model& model, const Polygon& polygon, const HPoint& light);
 
 struct ContourEdge {
-  /// The edge, directed so that `weight` > 0: model vertex indices.
+  /// The edge, directed so that `nb_c` > 0: model vertex indices.
   std::uint32_t from = 0, to = 0;
-  int weight = 0;
+  int nb_c = 0;
   std::uint32_t polygon = 0;  ///< a polygon using the edge (the first in file order)
   std::uint32_t edge = 0;     ///< the edge's position in that polygon
 };
 
 /// How a polygon takes part in a light's volumes, decided exactly.
 struct PolygonRole {
-  /// +1 / -1: the polygon bounds a volume, running counter-clockwise /
-  /// clockwise seen from the light; 0: it casts no volume (no surface, or
-  /// the light lies in its plane). For a twisted polygon: 1.
-  int facing = 0;
+  /// positive / negative: the polygon bounds a volume, running
+  /// counter-clockwise / clockwise seen from the light; zero: it casts no
+  /// volume (no surface, or the light lies in its plane). For a twisted
+  /// polygon: positive.
+  Sign facing = Sign::zero;
   /// L-twisted, or non-planar and folded or wrapped (twist.h): it gets its
   /// own volume, counted by parity, and its edges count as unshared for the
   /// rest of its model.
@@ -62,8 +63,8 @@ std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light);
 std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
                                        const HPoint& light);
 
-/// Edges of nonzero weight, in the order their first polygon lists them;
-/// polygons with facing 0 and twisted polygons add no weight.
+/// Edges of nonzero nb_c, in the order their first polygon lists them;
+/// polygons with facing 0 and twisted polygons add no nb_c.
 std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles);
 /// The same with the model's edge table (edge_table(model)) already at hand,
 /// as when one model is asked about many lights.

@@ -53,18 +53,8 @@ double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), s
 
 }  // namespace
 
-Box scene_bounds(const Scene& scene) {
-  Box box;
-  for (const Model& m : scene.models)
-    for (const Vec3& v : m.vertices) box.extend(v);
-  box.extend(scene.camera.eye);
-  for (const Light& l : scene.lights)
-    if (l.type == LightType::point) box.extend(l.position);
-  return box;
-}
-
-LightReach light_reach(const Scene& scene, const Box& bounds, const Light& light) {
-  LightReach reach;
+VolumeReach volume_reach(const Scene& scene, const Box& bounds, const Light& light) {
+  VolumeReach reach;
   if (light.type == LightType::directional) {
     reach.radius = length(bounds.hi - bounds.lo) * (1 + kMargin);
     return reach;
@@ -169,7 +159,7 @@ double distance_lower_bound(const Model& model, std::span<const PolygonSurface> 
   return lower_bound_from(nearest, scale);
 }
 
-double extrusion_factor(const Light& light, const LightReach& reach, double distance) {
+double extrusion_factor(const Light& light, const VolumeReach& reach, double distance) {
   if (light.type == LightType::directional) {
     const double d = length(light.direction);
     return reach.radius > 0 ? reach.radius / d * (1 + kMargin) : 1;
@@ -185,7 +175,7 @@ bool ends_on_sphere(const Light& light, double distance, double k) {
   return light.type == LightType::point && (!(distance > 0) || !(k <= kLargestUniformFactor));
 }
 
-double sphere_radius(const LightReach& reach) { return 2 * reach.radius * (1 + kMargin); }
+double sphere_radius(const VolumeReach& reach) { return 2 * reach.radius * (1 + kMargin); }
 
 double far_end_margin(const Box& bounds) {
   const double magnitude = std::max(max_abs(bounds.lo), max_abs(bounds.hi));

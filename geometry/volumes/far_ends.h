@@ -2,7 +2,7 @@
 // How far shadow volumes must reach (Bergeron's sphere of influence and its
 // unlimited counterpart): the extrusion factor k of one model's volume for
 // one light, chosen so that no eye ray that matters ever meets a far end.
-#include <geometry/oracle/bvh.h>
+#include <geometry/box.h>
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/scene.h>
 #include <geometry/volumes/triangle_runs.h>
@@ -12,13 +12,8 @@
 
 namespace umbra::geometry {
 
-/// The scene's bounding box as every volume sees it: every model's vertices
-/// (shadow-casting or not), the eye and the point lights. Eye segments to
-/// any surface point run inside it.
-Box scene_bounds(const Scene& scene);
-
 /// What every model's volume for one light must clear.
-struct LightReach {
+struct VolumeReach {
   /// Point lights: far ends at distance > radius from L. The radius covers
   /// the scene's bounds (eye, vertices, point lights) and, for a light with
   /// light_end, is cut to max(light_end, |eye - L|), slightly enlarged: the
@@ -30,7 +25,7 @@ struct LightReach {
   bool limited = false;  ///< radius comes from light_end (sphere of influence)
 };
 
-LightReach light_reach(const Scene& scene, const Box& bounds, const Light& light);
+VolumeReach volume_reach(const Scene& scene, const Box& bounds, const Light& light);
 
 /// A lower bound on the distance from the point light to the surfaces of the
 /// given polygons of `model` (fan triangles), below the true distance by a
@@ -48,7 +43,7 @@ double distance_lower_bound(const Model& model, std::span<const PolygonSurface> 
 /// The extrusion factor for a model whose volume-casting polygons are at
 /// distance >= `distance` from the light: every far vertex, edge and cap then
 /// lies beyond reach.radius. Directional lights ignore `distance`.
-double extrusion_factor(const Light& light, const LightReach& reach, double distance);
+double extrusion_factor(const Light& light, const VolumeReach& reach, double distance);
 
 /// The far vertices a', b' of the side polygon (a, b, b', a') of edge (a, b),
 /// each on its own ray away from the light (x' = x + k_x·(x - L), or
@@ -87,7 +82,7 @@ bool ends_on_sphere(const Light& light, double distance, double k);
 
 /// The radius of that sphere: twice the reach, which every far chord and
 /// cap piece then clears (sphere_ends.h).
-double sphere_radius(const LightReach& reach);
+double sphere_radius(const VolumeReach& reach);
 
 /// The margin by which far_edge_leaving_box clears `bounds`: 10^-6 of its
 /// diagonal, plus far more than the rounding of coordinates of the box's

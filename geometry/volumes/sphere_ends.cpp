@@ -1,4 +1,4 @@
-#include <geometry/exact/directions.h>
+#include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/volumes/sphere_ends.h>
 

@@ -6,9 +6,9 @@
 //      away from the light, exact) and, for the rest, which view it reads;
 //   2. depth views: only those some sample reads (shadow_map.h);
 //   3. decide pass: each remaining (sample, light) looked up (shadow_lookup.h).
+#include <geometry/box.h>
 #include <geometry/exact/predicates.h>
-#include <raster/light_range.h>
-#include <raster/light_reach.h>
+#include <raster/sphere_of_influence.h>
 #include <util/parallel_rows.h>
 #include <util/phase_clock.h>
 #include <raster/pixel_sample.h>
@@ -80,13 +80,6 @@ std::vector<Occluder> occluders_of(const geometry::SceneIndex& index, const Surf
   return out;
 }
 
-geometry::Box scene_bounds(const geometry::Scene& scene) {
-  geometry::Box box;
-  for (const geometry::Model& m : scene.models)
-    for (const Vec3& v : m.vertices) box.extend(v);
-  return box;
-}
-
 /// Filter taps, bilinear neighbours and dither reach at most this far past
 /// the texel a sample falls in.
 int view_margin(const ShadowMapOptions& o) { return o.pcf / 2 + 2; }
@@ -106,7 +99,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   // 1. The visible surface, as Method::volume finds it.
   auto start = util::Clock::now();
   const SurfaceTable table = surface_table(index);
-  const ReachTable reach(table.polygons, scene.lights);
+  const SphereTable spheres(table.polygons, scene.lights);
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
   const ScanlineResult scan =
       scanline_render(camera, table.polygons, 0, options.threads, {}, &progress);
@@ -157,7 +150,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       for (std::uint32_t l = 0; l < lights; ++l) {
         const geometry::Light& light = scene.lights[l];
         Decided& d = decided[pixel * lights + l];
-        if (entry_id ? reach.out_of_range(*entry_id, l, light, ray, tri)
+        if (entry_id ? spheres.out_of_range(*entry_id, l, light, ray, tri)
                      : out_of_range(light, ray, tri)) {
           d = Decided::out_of_range;
         } else if (casts && faces_away(light, ray.origin, tri)) {
@@ -181,7 +174,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   // 2. The depth views some sample reads; the others cost nothing.
   start = util::Clock::now();
   const std::vector<Occluder> occluders = occluders_of(index, table);
-  const geometry::Box bounds = scene_bounds(scene);
+  const geometry::Box bounds = geometry::models_bounds(scene);
   const double near = 1e-7 * std::max(index.magnitude(), 1e-300);
   std::vector<std::vector<MapView>> views(lights);
   std::vector<std::vector<DepthMap>> maps(lights);

@@ -2,14 +2,13 @@
 // In_Shadow flags, counted by the scanline renderer from each light's count
 // at the eye; what floating point cannot decide is decided again exactly, so
 // every pixel agrees with the oracle off boundaries.
-#include <geometry/exact/directions.h>
+#include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/volumes/eye_start.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/crossings.h>
-#include <raster/light_range.h>
-#include <raster/light_reach.h>
+#include <raster/sphere_of_influence.h>
 #include <util/parallel_rows.h>
 #include <util/phase_clock.h>
 #include <raster/pixel_sample.h>
@@ -78,7 +77,7 @@ std::vector<EyePlane> eye_planes(const geometry::Scene& scene,
         if (sp.group >= 0)
           plane.group = sp.group;
         else
-          plane.weight = side.eye_side == geometry::Sign::negative ? sp.nb_c : -sp.nb_c;
+          plane.nb_c = side.eye_side == geometry::Sign::negative ? sp.nb_c : -sp.nb_c;
       }
       out.push_back(plane);
     }
@@ -136,7 +135,7 @@ Frame render_volume(const geometry::SceneIndex& index,
 
   start = util::Clock::now();
   SurfaceTable table = surface_table(index);
-  const ReachTable reach(table.polygons, scene.lights);
+  const SphereTable spheres(table.polygons, scene.lights);
   append_shadow_polygons(volumes, eye, table.polygons);
   const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye);
   progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
@@ -197,7 +196,7 @@ Frame render_volume(const geometry::SceneIndex& index,
             sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
             continue;
           }
-          if (reach.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
+          if (spheres.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
             // count.<i> is 0 out of range, as in the exact fallback below.
             // The scanline's count means nothing there: volumes are cut at
             // the light's reach without caps, so it may even be negative.

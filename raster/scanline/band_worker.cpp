@@ -1,4 +1,4 @@
-// Band::run, the order of a worker's rows: each band of rows goes through
+// BandWorker::run, the order of a worker's rows: each band of rows goes through
 // the surface pass, then the shadow pass; and the active lists they walk.
 #include <raster/scanline/band_worker.h>
 
@@ -10,7 +10,7 @@ namespace umbra::raster::detail {
 /// Rows [row0, row1). A worker may run several such chunks one after the
 /// other; a chunk that starts where its previous one ended carries its
 /// active lists on, any other starts them afresh.
-void Band::run(int row0, int row1) {
+void BandWorker::run(int row0, int row1) {
   const int width = scene_.camera.frame.width;
   const std::size_t band_pixels = static_cast<std::size_t>(kBandRows) * width;
   ray_.resize(band_pixels);
@@ -67,7 +67,7 @@ void Band::run(int row0, int row1) {
 }
 
 /// The surface edge at place k of the y bucket sort enters the active list.
-void Band::activate(std::size_t k) {
+void BandWorker::activate(std::size_t k) {
   const std::uint32_t e = scene_.by_scan_row[k];
   const TableEdge& t = scene_.edges[e];
   crossings_.push_back(
@@ -75,7 +75,7 @@ void Band::activate(std::size_t k) {
 }
 
 /// The strip of the surface edge at place k of the near rows' bucket sort.
-Strip Band::make_strip(std::size_t k) const {
+Strip BandWorker::make_strip(std::size_t k) const {
   const std::uint32_t e = scene_.by_near_row[k];
   return strip_of(scene_.edges[e], e);
 }

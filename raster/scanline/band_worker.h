@@ -35,14 +35,14 @@ inline bool before(const DepthEntry& a, const DepthEntry& b) {
 }
 
 /// One worker's scanlines, with its own active edge lists.
-class Band {
+class BandWorker {
  public:
-  /// Each worker makes its Band afresh every frame, so its lists and
+  /// Each worker makes its BandWorker afresh every frame, so its lists and
   /// per-polygon arrays take huge pages (huge_pages.h), the lists room for
   /// every edge at once: they never move as they grow, and fault in 2 MiB at
   /// a time. With 4 KiB pages, the moves and faults were a tenth of a
   /// 16-light frame on this machine kind.
-  Band(const Scene& scene, ScanlineResult& result, util::Progress* progress)
+  BandWorker(const EdgeTables& scene, ScanlineResult& result, util::Progress* progress)
       : scene_(scene), result_(result), progress_(progress), flags_(scene.group_start) {
     const std::size_t polygons = scene.polygons.size();
     util::reserve_huge(inside_, polygons);
@@ -201,7 +201,7 @@ class Band {
   /// Flags row j's pixels under a polygon with no projected area.
   void flag_degenerate(int j);
 
-  const Scene& scene_;
+  const EdgeTables& scene_;
   ScanlineResult& result_;
   util::Progress* progress_;
   std::uint64_t spans_ = 0;              // spans shaded by this worker

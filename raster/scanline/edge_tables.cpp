@@ -175,9 +175,9 @@ void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
   });
 }
 
-/// Every shadow polygon's edges and strips side by side (Scene::shadow_edges,
+/// Every shadow polygon's edges and strips side by side (EdgeTables::shadow_edges,
 /// shadow_strips), its span of rows, and the polygons bucketed by first row.
-void shadow_tables(Scene& scene, std::span<const std::size_t> first_edge, unsigned threads) {
+void shadow_tables(EdgeTables& scene, std::span<const std::size_t> first_edge, unsigned threads) {
   const std::size_t polygons = scene.polygons.size();
   util::reserve_huge(scene.shadow_spans, polygons);
   scene.shadow_spans.assign(polygons, ShadowSpan{});
@@ -256,10 +256,10 @@ void check_input(std::span<const RasterPolygon> input, std::size_t lights,
 
 }  // namespace
 
-Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
               std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads) {
   check_input(input, lights, group_start);
-  Scene scene;
+  EdgeTables scene;
   scene.lights = lights;
   scene.group_start.assign(group_start.begin(), group_start.end());
   scene.camera = make_camera_space(frame, input);
@@ -298,7 +298,7 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
     for (std::size_t k = begin; k < end; ++k) {
       const ProjectedPolygon& polygon = scene.polygons[k];
       const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
-      // Band::behind_band widens a polygon's box by a pixel, which must hold
+      // BandWorker::behind_band widens a polygon's box by a pixel, which must hold
       // its edges' strips and the rounding of its clip at the band's rows, a
       // few ulps of |xa| + |xb| (1e-3 px at 1e12): polygons with wider strips
       // or farther-off coordinates are always scanned. Clipped shadow
@@ -315,7 +315,7 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
       }
       scene.cullable[k] = cullable;
       // The bounding box holds every endpoint's error; widened by a pixel
-      // like the band's box (Band::behind_band), and cut to the rows.
+      // like the band's box (BandWorker::behind_band), and cut to the rows.
       if (cullable)
         scene.floors[k] =
             depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1,
@@ -331,7 +331,7 @@ Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon>
   return scene;
 }
 
-void add_eye_planes(std::span<const EyePlane> planes, Scene& scene) {
+void add_eye_planes(std::span<const EyePlane> planes, EdgeTables& scene) {
   for (const EyePlane& plane : planes) {
     if (plane.light >= scene.lights || !geometry::is_finite(plane.normal) ||
         (plane.group >= 0 && static_cast<std::size_t>(plane.group) >= scene.group_start.size()) ||
@@ -340,7 +340,7 @@ void add_eye_planes(std::span<const EyePlane> planes, Scene& scene) {
                                   std::to_string(plane.light) +
                                   " has a bad light, group or normal");
     const Vec3 n = scene.camera.to_camera_direction(plane.normal);
-    scene.eye_planes.push_back({n, length(n), plane.light, plane.weight, plane.group});
+    scene.eye_planes.push_back({n, length(n), plane.light, plane.nb_c, plane.group});
   }
 }
 

@@ -45,8 +45,8 @@ inline int first_column(double x, int width) {
 }
 
 /// A shadow polygon's depth over a screen box, for skipping it where it is
-/// clearly behind every visible point (Band::behind_band), and the largest
-/// error bound of its depth there (Band::shade_shadow).
+/// clearly behind every visible point (BandWorker::behind_band), and the largest
+/// error bound of its depth there (BandWorker::shade_shadow).
 struct DepthFloor {
   /// Below the polygon's depth less its error bound (depth_error) at every
   /// pixel centre of the box; -infinity when no such bound was found.
@@ -105,17 +105,17 @@ inline Strip strip_of(const TableEdge& t, std::uint32_t e) {
 }
 
 /// A shadow polygon's edge as the shadow pass reads it, band after band,
-/// with the polygon's other edges beside it (Scene::shadow_edges): its line,
-/// the factor that takes a row to its crossing (Band::crossing_x), its rows.
+/// with the polygon's other edges beside it (EdgeTables::shadow_edges): its line,
+/// the factor that takes a row to its crossing (BandWorker::crossing_x), its rows.
 struct ShadowEdge {
   Vec3 m;    ///< ProjectedEdge::m
-  double c;  ///< -(width/2) / (a·h·m.x), as Band::row_scale
+  double c;  ///< -(width/2) / (a·h·m.x): row_scale(camera, m)
   std::uint32_t edge;
   int first, last;  ///< TableEdge::scan
 };
 
-/// Where a shadow polygon's edges and strips lie in Scene::shadow_edges and
-/// Scene::shadow_strips, and the rows on which any of them is active or any
+/// Where a shadow polygon's edges and strips lie in EdgeTables::shadow_edges and
+/// EdgeTables::shadow_strips, and the rows on which any of them is active or any
 /// strip meets (empty when first > last).
 struct ShadowSpan {
   std::uint32_t begin = 0, end = 0;
@@ -124,12 +124,12 @@ struct ShadowSpan {
 
 /// Everything the bands share, read-only once built. Not copied: polygons
 /// and the edge table point into edge_store (a move keeps them valid).
-struct Scene {
-  Scene() = default;
-  Scene(const Scene&) = delete;
-  Scene& operator=(const Scene&) = delete;
-  Scene(Scene&&) = default;
-  Scene& operator=(Scene&&) = default;
+struct EdgeTables {
+  EdgeTables() = default;
+  EdgeTables(const EdgeTables&) = delete;
+  EdgeTables& operator=(const EdgeTables&) = delete;
+  EdgeTables(EdgeTables&&) = default;
+  EdgeTables& operator=(EdgeTables&&) = default;
 
   CameraSpace camera;
   /// Every polygon's clipped edges, edge_room(vertices) places each, in
@@ -166,10 +166,10 @@ struct Scene {
   std::vector<std::size_t> shadow_bucket;
   util::HugeVector<int> shadow_by_row_last;
   /// Per polygon: a shadow polygon whose depth may be bounded over a band
-  /// of rows (band_cull); others are always scanned.
+  /// of rows (BandWorker::behind_band); others are always scanned.
   util::HugeVector<std::uint8_t> cullable;
   /// Per cullable polygon: its depth floor over its whole bounding box,
-  /// widened by a pixel (Band::behind_band's first test).
+  /// widened by a pixel (BandWorker::behind_band's first test).
   util::HugeVector<DepthFloor> floors;
   /// Some entry of `cullable` is set (scanline_render sets it once the
   /// caller's choice is applied): otherwise no band needs a depth bound.
@@ -183,7 +183,7 @@ struct Scene {
     Vec3 normal;
     double normal_length = 0;
     std::uint32_t light = 0;
-    std::int32_t weight = 0;
+    std::int32_t nb_c = 0;
     std::int32_t group = -1;
   };
   std::vector<CameraEyePlane> eye_planes;
@@ -192,11 +192,11 @@ struct Scene {
 /// Checks the input (throws std::invalid_argument naming the first bad
 /// polygon), then projects every polygon and tables every edge on up to
 /// `threads` threads.
-Scene prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
               std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads);
 
 /// Checks the eye planes (throws std::invalid_argument on a bad light,
 /// group or normal) and adds them to the prepared scene.
-void add_eye_planes(std::span<const EyePlane> planes, Scene& scene);
+void add_eye_planes(std::span<const EyePlane> planes, EdgeTables& scene);
 
 }  // namespace umbra::raster::detail

@@ -123,7 +123,7 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   // counter-clockwise.
   const double n_world_length = length(n_world);
   const double side = dot(n_world, frame.eye - w[0]);
-  out.weight = side > 0 ? polygon.nb_c : -polygon.nb_c;
+  out.nb_c = side > 0 ? polygon.nb_c : -polygon.nb_c;
   out.group = polygon.group;
 
   // Degeneracy. The fan sum's rounding error is below e_n = 1e-12·count·size·mag

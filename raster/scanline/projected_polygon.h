@@ -78,7 +78,7 @@ struct ProjectedPolygon {
   RasterPolygon::Kind kind = RasterPolygon::Kind::surface;
   std::int32_t id = 0;
   std::uint32_t light = 0;
-  std::int32_t weight =
+  std::int32_t nb_c =
       0;  ///< shadow: +nb_c if the eye sees the vertices counter-clockwise, else −nb_c
   std::int32_t group = -1;  ///< shadow: the twisted group it toggles, or -1
 
@@ -97,7 +97,7 @@ struct ProjectedPolygon {
 
   double bbox_x0 = 0, bbox_y0 = 0, bbox_x1 = 0,
          bbox_y1 = 0;  ///< pixel bounding box of the clipped projection
-  /// In storage the caller lent project_polygon (Scene::edge_store).
+  /// In storage the caller lent project_polygon (EdgeTables::edge_store).
   std::span<const ProjectedEdge> edges;
 
   /// Ray parameter t at which eye + t·d meets the polygon's plane (d in camera space).

@@ -46,7 +46,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
   threads = util::resolve_threads(threads);
   const auto start = std::chrono::steady_clock::now();
-  detail::Scene scene = detail::prepare(frame, polygons, lights, group_start, threads);
+  detail::EdgeTables scene = detail::prepare(frame, polygons, lights, group_start, threads);
   detail::add_eye_planes(eye_planes, scene);
   if (!skip_hidden_shadows) std::fill(scene.cullable.begin(), scene.cullable.end(), 0);
   scene.any_cullable =
@@ -60,7 +60,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   result.lights = lights;
   const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
   // Not initialized here: every row's pixels are set by the worker that
-  // renders the row (Band::scan_row), in parallel.
+  // renders the row (BandWorker::scan_row), in parallel.
   result.visible.resize(pixels);
   result.depth.resize(pixels);
   result.count.resize(pixels * lights);
@@ -76,7 +76,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // the edges started above, read out of order) about once, not per band.
   const int workers =
       static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
-  constexpr int kBand = detail::Band::kBandRows;
+  constexpr int kBand = detail::BandWorker::kBandRows;
   const int bands = (frame.height + kBand - 1) / kBand;
   // Each row is computed from the shared read-only scene alone, and bands
   // start at multiples of kBandRows whatever the thread count, so neither
@@ -85,12 +85,12 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // count.
   std::vector<std::uint64_t> spans(static_cast<std::size_t>(workers), 0);
   std::vector<std::uint64_t> skipped(static_cast<std::size_t>(workers), 0);
-  // One item per worker, each with its own Band (active lists, per-polygon
+  // One item per worker, each with its own BandWorker (active lists, per-polygon
   // state) taking bands from the scheduler; parallel_rows rethrows a
   // worker's exception here.
   BandScheduler schedule(bands, workers);
   util::parallel_rows(workers, static_cast<unsigned>(workers), [&](int w) {
-    detail::Band band(scene, result, progress);
+    detail::BandWorker band(scene, result, progress);
     for (int b = schedule.next(w); b >= 0; b = schedule.next(w))
       band.run(b * kBand, std::min(frame.height, (b + 1) * kBand));
     spans[static_cast<std::size_t>(w)] = band.spans();

@@ -22,7 +22,7 @@ struct RasterPolygon {
   /// surface: the caller's surface id; shadow: index in ShadowVolumes::polygons.
   std::uint32_t id = 0;
   std::uint32_t light = 0;  ///< shadow only
-  /// shadow only: view-independent weight, added when the eye ray crosses the
+  /// shadow only: view-independent nb_c, added when the eye ray crosses the
   /// polygon from the side on which its vertices run counter-clockwise,
   /// subtracted when it crosses from the other side.
   std::int32_t nb_c = 0;
@@ -36,14 +36,14 @@ struct RasterPolygon {
 /// instead of as a polygon (which the eye sees edge-on). No ray from the eye
 /// crosses it in front of a visible point except at the eye itself: the
 /// rays that leave the eye on the side `normal` points to, when the eye
-/// lies inside the polygon (eye_start.h). Those rays count `weight` (or
+/// lies inside the polygon (eye_start.h). Those rays count `nb_c` (or
 /// toggle `group`) as a crossing in front of every visible point; a ray too
-/// close to the plane to tell flags its pixel for `light`. Weight 0 and
+/// close to the plane to tell flags its pixel for `light`. nb_c 0 and
 /// group -1: the plane only flags (the eye outside the polygon).
 struct EyePlane {
   geometry::Vec3 normal;  ///< world space
   std::uint32_t light = 0;
-  std::int32_t weight = 0;
+  std::int32_t nb_c = 0;
   std::int32_t group = -1;
 };
 
@@ -66,7 +66,7 @@ struct ScanlineResult {
   util::UninitializedVector<std::int32_t>
       visible;                        ///< surface id per pixel; -1 where the ray hits nothing
   util::UninitializedVector<double> depth;  ///< ray parameter t of the visible hit (infinity if none)
-  /// [pixel * lights + light]: the summed weights of the shadow polygons in
+  /// [pixel * lights + light]: the summed nb_c values of the shadow polygons in
   /// front of the hit, plus, for every twisted group whose flag differs at
   /// the hit from its value at the eye, +1 (set there) or -1 (cleared there);
   /// the count at the eye is the caller's. 0 where the ray hits nothing:
@@ -84,7 +84,7 @@ struct ScanlineResult {
   std::uint64_t spans = 0;
   /// (shadow polygon, band of rows) pairs skipped whole because the polygon
   /// lies clearly behind every visible point round its part in the band
-  /// (Bergeron's saving, Band::behind_band in raster/scanline/shadow_pass.cpp).
+  /// (Bergeron's saving, BandWorker::behind_band in raster/scanline/shadow_pass.cpp).
   std::uint64_t shadow_bands_skipped = 0;
   double seconds_prepare = 0;  ///< projecting the polygons, building the edge table
 };

@@ -20,7 +20,7 @@ namespace umbra::raster::detail {
 /// strips are read from the scene where it is scanned, never copied: with
 /// many lights a band's lists hold thousands of polygons, whose edges were
 /// copied twice a band when the lists held edges.
-void Band::start_shadow_band() {
+void BandWorker::start_shadow_band() {
   const int b0 = band0_;
   std::erase_if(shadows_, [&](const ActiveShadow& a) { return a.last < b0; });
   std::erase_if(strips_, [&](const Strip& e) { return e.last < b0; });
@@ -54,7 +54,7 @@ void Band::start_shadow_band() {
 /// pushed it out of the cache). Counts are sums and flags are ORs, and the
 /// twisted groups are settled per pixel afterwards, so the order of the
 /// visits changes no value.
-void Band::scan_shadows() {
+void BandWorker::scan_shadows() {
   const int width = scene_.camera.frame.width;
   for (const std::uint32_t polygon : live_) {
     const ShadowSpan& span = scene_.shadow_spans[polygon];
@@ -100,12 +100,12 @@ void Band::scan_shadows() {
 }
 
 /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a
-/// point is visible, the polygon adds its weight to its light's count if
+/// point is visible, the polygon adds its nb_c to its light's count if
 /// it lies between the eye and that point (a twisted one toggles its
 /// group's flag instead, counted by count_groups). Its depth there, against
 /// 0 and against the visible depth, must be clear of both error bounds, or
 /// the pixel is uncertain for the polygon's light.
-void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, int i0, int i1,
+void BandWorker::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, int i0, int i1,
                         int j) {
   const double z_near = scene_.camera.z_near;
   // The largest first bound over the polygon's box (DepthFloor::error,
@@ -137,18 +137,18 @@ void Band::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, i
     }
     if (!(t > 0 && t < t_visible)) continue;
     if (shadow.group < 0)
-      result_.count[p * scene_.lights + shadow.light] += shadow.weight;
+      result_.count[p * scene_.lights + shadow.light] += shadow.nb_c;
     else
       group_hits_.push_back({p, shadow.group, shadow.light});
   }
 }
 
-/// The eye planes (Scene::eye_planes) at every pixel of the band where a
+/// The eye planes (EdgeTables::eye_planes) at every pixel of the band where a
 /// point is visible: a ray clearly on a plane's crossing side counts its
-/// weight or toggles its group; one within 1e-9 of the plane (relative to
+/// nb_c or toggles its group; one within 1e-9 of the plane (relative to
 /// |n|·|d|, far above the rounding of the camera-space normal and ray) is
 /// flagged for the plane's light.
-void Band::shade_eye_planes() {
+void BandWorker::shade_eye_planes() {
   if (scene_.eye_planes.empty()) return;
   const int width = scene_.camera.frame.width;
   for (int j = band0_; j < band1_; ++j) {
@@ -157,7 +157,7 @@ void Band::shade_eye_planes() {
       const std::size_t p = pixel(i, j);
       if (result_.visible[p] < 0) continue;
       const Vec3& d = ray_[base + static_cast<std::size_t>(i)];
-      for (const Scene::CameraEyePlane& plane : scene_.eye_planes) {
+      for (const EdgeTables::CameraEyePlane& plane : scene_.eye_planes) {
         const double s = dot(plane.normal, d);
         if (!(std::abs(s) > 1e-9 * plane.normal_length * ray_length_[base + i])) {
           flag_light(p, plane.light);
@@ -165,7 +165,7 @@ void Band::shade_eye_planes() {
         }
         if (s < 0) continue;
         if (plane.group < 0)
-          result_.count[p * scene_.lights + plane.light] += plane.weight;
+          result_.count[p * scene_.lights + plane.light] += plane.nb_c;
         else
           group_hits_.push_back({p, plane.group, plane.light});
       }
@@ -177,7 +177,7 @@ void Band::shade_eye_planes() {
 /// band: each group whose flag ends other than it started (an odd number of
 /// its polygons crossed) changes its light's count by one, +1 where the
 /// flag is set at the hit, -1 where it is cleared.
-void Band::count_groups() {
+void BandWorker::count_groups() {
   std::sort(group_hits_.begin(), group_hits_.end(),
             [](const GroupHit& a, const GroupHit& b) { return a.pixel < b.pixel; });
   for (std::size_t k = 0; k < group_hits_.size();) {
@@ -200,7 +200,7 @@ void Band::count_groups() {
 /// t·(1 + 1e-9) + error on an exact visible depth over the band's rows
 /// (-infinity where nothing is seen), and the sparse table of its maxima
 /// over runs of 2^k columns, so any run's maximum costs two lookups.
-void Band::bound_band_depth() {
+void BandWorker::bound_band_depth() {
   const int width = scene_.camera.frame.width;
   const auto w = static_cast<std::size_t>(width);
   int levels = 1;
@@ -227,7 +227,7 @@ void Band::bound_band_depth() {
 }
 
 /// The largest visible-depth bound over columns [i0, i1], i0 <= i1.
-double Band::band_depth_bound(int i0, int i1) const {
+double BandWorker::band_depth_bound(int i0, int i1) const {
   const auto length = static_cast<unsigned>(i1 - i0 + 1);
   const int k = std::bit_width(length) - 1;
   const std::vector<double>& level = depth_bound_[static_cast<std::size_t>(k)];
@@ -238,7 +238,7 @@ double Band::band_depth_bound(int i0, int i1) const {
 /// Is shadow polygon `polygon` clearly behind the visible point at every
 /// pixel of the current band where it could count or flag? Judged once
 /// per polygon and band.
-bool Band::behind_in_band(std::uint32_t polygon) {
+bool BandWorker::behind_in_band(std::uint32_t polygon) {
   if (!scene_.cullable[polygon] || !behind_band(polygon)) return false;
   ++skipped_;
   return true;
@@ -248,7 +248,7 @@ bool Band::behind_in_band(std::uint32_t polygon) {
 /// visible point changes nothing. The polygon's whole bounding box, widened
 /// by a pixel (which holds its edges' strips, cullable's margin < 0.25, and
 /// the rounding of the clip), holds its part in the band. If the polygon's
-/// depth floor over that box (Scene::floors, made once by depth_floor,
+/// depth floor over that box (EdgeTables::floors, made once by depth_floor,
 /// raster/scanline/edge_tables.cpp) exceeds the band's largest visible-depth bound over
 /// the box's columns plus too_close's 1e-9·z_near, then at every pixel of
 /// the band shade_shadow would find the polygon behind and clear of both
@@ -262,7 +262,7 @@ bool Band::behind_in_band(std::uint32_t polygon) {
 /// somewhere in every band they cross, and the clipping cost more than the
 /// few extra skips saved (refined_elephant, 16 lights: 137k pairs skipped
 /// against the whole box's 31k, yet the frame 5-15 % slower).
-bool Band::behind_band(std::uint32_t index) const {
+bool BandWorker::behind_band(std::uint32_t index) const {
   const DepthFloor& whole = scene_.floors[index];
   return whole.i0 <= whole.i1 &&
          whole.floor > band_depth_bound(whole.i0, whole.i1) + 1e-9 * scene_.camera.z_near;

@@ -11,7 +11,7 @@ namespace umbra::raster::detail {
 /// Row j's surfaces: visible polygon, depth and their uncertainty;
 /// crossings_[0, carried) were active on the row before. The shadow
 /// polygons are counted afterwards (scan_shadows).
-void Band::scan_row(int j, std::size_t carried) {
+void BandWorker::scan_row(int j, std::size_t carried) {
   const CameraSpace& camera = scene_.camera;
   const int width = camera.frame.width;
   for (int i = 0; i < width; ++i) {
@@ -61,7 +61,7 @@ void Band::scan_row(int j, std::size_t carried) {
   surfaces_.clear();
 }
 
-void Band::toggle(std::uint32_t polygon) {
+void BandWorker::toggle(std::uint32_t polygon) {
   std::vector<std::uint32_t>& list = surfaces_;
   if (inside_[polygon]) {
     inside_[polygon] = 0;
@@ -76,7 +76,7 @@ void Band::toggle(std::uint32_t polygon) {
   }
 }
 
-void Band::measure(DepthEntry& entry, const Vec3& d) const {
+void BandWorker::measure(DepthEntry& entry, const Vec3& d) const {
   const ProjectedPolygon& polygon = scene_.polygons[entry.polygon];
   entry.t = polygon.depth(d);
   if (std::isnan(entry.t)) entry.t = kInfinity;  // ray in the plane; flagged by its error
@@ -86,7 +86,7 @@ void Band::measure(DepthEntry& entry, const Vec3& d) const {
 /// One span. Its surfaces keep a depth-ordered list, re-sorted pixel to
 /// pixel by insertion (depths along a span change little); the first with
 /// t > 0 is visible.
-void Band::shade_span(int i0, int i1, int j) {
+void BandWorker::shade_span(int i0, int i1, int j) {
   const double z_near = scene_.camera.z_near;
   order_.clear();
   for (std::uint32_t polygon : surfaces_) order_.push_back({0, 0, polygon});

@@ -1,3 +1,4 @@
+#include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
 #include <raster/scanline/surface_table.h>
 

@@ -35,7 +35,7 @@ namespace umbra::raster::detail {
 /// Strip by strip, each over its rows in the band (as scan_shadows walks
 /// polygons): flags are ORs, and settle_surface_flags then makes the
 /// outcome independent of the order, so the order changes nothing.
-void Band::flag_near_edges() {
+void BandWorker::flag_near_edges() {
   for (const Strip& strip : strips_) flag_strip(strip);
   for (const std::uint32_t polygon : live_) {
     const ShadowSpan& span = scene_.shadow_spans[polygon];
@@ -43,7 +43,7 @@ void Band::flag_near_edges() {
   }
 }
 
-void Band::flag_strip(const Strip& strip) {
+void BandWorker::flag_strip(const Strip& strip) {
   const int width = scene_.camera.frame.width;
   const int j0 = std::max(strip.first, band0_), j1 = std::min(strip.last + 1, band1_);
   for (int j = j0; j < j1; ++j) {
@@ -75,7 +75,7 @@ void Band::flag_strip(const Strip& strip) {
   }
 }
 
-void Band::settle_surface_flags() {
+void BandWorker::settle_surface_flags() {
   const int width = scene_.camera.frame.width;
   for (int j = band0_; j < band1_; ++j)
     for (int i = 0; i < width; ++i) {
@@ -88,7 +88,7 @@ void Band::settle_surface_flags() {
 }
 
 /// The pixels [i0, i1) of row j in the strip of edge e: the distance test.
-void Band::flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
+void BandWorker::flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
   const ProjectedEdge& e = *t.edge;
   const double row_y = j + 0.5;
   double extra = 0;
@@ -111,7 +111,7 @@ void Band::flag_near_edge(const TableEdge& t, int i0, int i1, int j) {
 
 /// A shadow polygon's doubt is its light's alone: the visible point and the
 /// other lights' counts do not depend on it. A surface's is every answer's.
-void Band::flag(std::size_t p, const ProjectedPolygon& polygon) {
+void BandWorker::flag(std::size_t p, const ProjectedPolygon& polygon) {
   if (polygon.kind == RasterPolygon::Kind::shadow)
     flag_light(p, polygon.light);
   else
@@ -120,7 +120,7 @@ void Band::flag(std::size_t p, const ProjectedPolygon& polygon) {
 
 /// Could this polygon change pixel p's answer if the pixel were on the other
 /// side of one of its edges? Not if it is clearly behind the visible point.
-bool Band::matters(const ProjectedPolygon& polygon, int i, std::size_t p) const {
+bool BandWorker::matters(const ProjectedPolygon& polygon, int i, std::size_t p) const {
   // Where nothing is seen a shadow polygon changes nothing (a surface
   // whose edge passes close flags the pixel through its own edge strip).
   if (result_.visible[p] < 0) return polygon.kind == RasterPolygon::Kind::surface;
@@ -135,7 +135,7 @@ bool Band::matters(const ProjectedPolygon& polygon, int i, std::size_t p) const 
 
 /// A polygon with no projected area is not drawn; every pixel of its
 /// bounding box (plus a pixel) is flagged, whatever its depth.
-void Band::flag_degenerate(int j) {
+void BandWorker::flag_degenerate(int j) {
   const int width = scene_.camera.frame.width;
   const double row_y = j + 0.5;
   for (std::uint32_t k : scene_.degenerate) {

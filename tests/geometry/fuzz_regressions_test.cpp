@@ -25,7 +25,7 @@ TEST(FuzzRegression, PlanarPolygonWithoutFanTriangleHasNoSurface) {
     EXPECT_TRUE(s.triangles.empty());
   }
   const std::vector<PolygonRole> roles = polygon_roles(m, HPoint::point({-0.8, -0.8, -0.8}));
-  for (const PolygonRole& r : roles) EXPECT_EQ(r.facing, 0);
+  for (const PolygonRole& r : roles) EXPECT_EQ(r.facing, Sign::zero);
 
   Scene scene;
   scene.models = {m};

@@ -1,5 +1,5 @@
 // Contour decisions against exact rational arithmetic: facing of every
-// polygon and the weight of every edge of random lattice meshes, under lights
+// polygon and the nb_c of every edge of random lattice meshes, under lights
 // placed where decisions degenerate (on a vertex, on an edge's line, in a
 // face's plane, between vertices), at scales from 1e-6 to 1e6.
 #include <geometry/volumes/contour.h>
@@ -24,7 +24,7 @@ Sign reference_facing(const std::vector<Vec3>& v, const Vec3& light) {
   return sign_of(dot(n, q(light) - q(v[0])));
 }
 
-/// Edge weights by the definition of contour.h, keyed by the undirected
+/// Edge nb_c values by the definition of contour.h, keyed by the undirected
 /// vertex pair (positions are distinct on the lattice), along (min, max).
 std::map<std::pair<std::uint32_t, std::uint32_t>, int> reference_weights(const Model& m,
                                                                          const Vec3& light) {
@@ -88,9 +88,9 @@ TEST(ContourExact, WeightsEqualRationalArithmeticOnDegenerateLatticeMeshes) {
       const auto expected = reference_weights(m, light);
       std::map<std::pair<std::uint32_t, std::uint32_t>, int> got;
       for (const ContourEdge& e : contour_edges(m, HPoint::point(light))) {
-        ASSERT_GT(e.weight, 0);
+        ASSERT_GT(e.nb_c, 0);
         const bool forward = e.from < e.to;
-        got[{std::min(e.from, e.to), std::max(e.from, e.to)}] = forward ? e.weight : -e.weight;
+        got[{std::min(e.from, e.to), std::max(e.from, e.to)}] = forward ? e.nb_c : -e.nb_c;
       }
       ASSERT_EQ(got, expected) << "scale " << scale << " trial " << trial;
       for (const Polygon& p : m.polygons) {

@@ -18,17 +18,17 @@ Model unit_cube() {
   return m;
 }
 
-/// Multiset of weights: {weight → how many edges}.
-std::map<int, int> weights(const std::vector<ContourEdge>& edges) {
+/// Multiset of nb_c values: {nb_c → how many edges}.
+std::map<int, int> nb_c_counts(const std::vector<ContourEdge>& edges) {
   std::map<int, int> w;
-  for (const ContourEdge& e : edges) ++w[e.weight];
+  for (const ContourEdge& e : edges) ++w[e.nb_c];
   return w;
 }
 
 TEST(ContourEdges, CubeLitFromAboveHasItsFourTopEdgesWithWeightTwo) {
   const Model cube = unit_cube();
   const auto edges = contour_edges(cube, HPoint::point({0.5, 5, 0.5}));
-  EXPECT_EQ(weights(edges), (std::map<int, int>{{2, 4}}));
+  EXPECT_EQ(nb_c_counts(edges), (std::map<int, int>{{2, 4}}));
   for (const ContourEdge& e : edges) {  // all on the top face y = 1
     EXPECT_EQ(cube.vertices[e.from].y, 1);
     EXPECT_EQ(cube.vertices[e.to].y, 1);
@@ -36,19 +36,19 @@ TEST(ContourEdges, CubeLitFromAboveHasItsFourTopEdgesWithWeightTwo) {
 }
 
 TEST(ContourEdges, CubeLitFromACornerHasAHexagonalSilhouette) {
-  EXPECT_EQ(weights(contour_edges(unit_cube(), HPoint::point({5, 5, 5}))),
+  EXPECT_EQ(nb_c_counts(contour_edges(unit_cube(), HPoint::point({5, 5, 5}))),
             (std::map<int, int>{{2, 6}}));
   // A directional light along (-1,-1,-1) sees the same silhouette.
-  EXPECT_EQ(weights(contour_edges(unit_cube(), HPoint::at_infinity({1, 1, 1}))),
+  EXPECT_EQ(nb_c_counts(contour_edges(unit_cube(), HPoint::at_infinity({1, 1, 1}))),
             (std::map<int, int>{{2, 6}}));
 }
 
 TEST(ContourEdges, CubeWithTheLightInTheTopFacePlane) {
   // The top face has facing 0 and bounds nothing, so its four edges act as
-  // open edges of their other face: weight 1 each. The light (0.5, 1, 5) is in
+  // open edges of their other face: nb_c 1 each. The light (0.5, 1, 5) is in
   // front of the z = 1 face only, so its edges with the averted bottom, x = 0
-  // and x = 1 faces have weight 2. Edges between averted faces cancel.
-  EXPECT_EQ(weights(contour_edges(unit_cube(), HPoint::point({0.5, 1, 5}))),
+  // and x = 1 faces have nb_c 2. Edges between averted faces cancel.
+  EXPECT_EQ(nb_c_counts(contour_edges(unit_cube(), HPoint::point({0.5, 1, 5}))),
             (std::map<int, int>{{1, 4}, {2, 3}}));
 }
 
@@ -56,7 +56,7 @@ TEST(ContourEdges, OpenBoxLitFromAboveHasItsRimWithWeightOne) {
   Model box = unit_cube();
   box.polygons.erase(box.polygons.begin() + 3);  // no top face (y = 1)
   const auto edges = contour_edges(box, HPoint::point({0.5, 5, 0.5}));
-  EXPECT_EQ(weights(edges), (std::map<int, int>{{1, 4}}));
+  EXPECT_EQ(nb_c_counts(edges), (std::map<int, int>{{1, 4}}));
   const EdgeTopology t = edge_topology(box);
   EXPECT_EQ(t.edges, 12u);
   EXPECT_EQ(t.boundary_edges, 4u);
@@ -68,10 +68,10 @@ TEST(ContourEdges, SingleQuadHasFourBoundaryEdgesUnlessTheLightIsInItsPlane) {
   Model quad;
   quad.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
   quad.polygons = {{0, 1, 2, 3}};
-  EXPECT_EQ(weights(contour_edges(quad, HPoint::point({0.5, 3, 0.5}))), (std::map<int, int>{{1, 4}}));
-  EXPECT_EQ(weights(contour_edges(quad, HPoint::point({0.5, -3, 0.5}))), (std::map<int, int>{{1, 4}}));
+  EXPECT_EQ(nb_c_counts(contour_edges(quad, HPoint::point({0.5, 3, 0.5}))), (std::map<int, int>{{1, 4}}));
+  EXPECT_EQ(nb_c_counts(contour_edges(quad, HPoint::point({0.5, -3, 0.5}))), (std::map<int, int>{{1, 4}}));
   EXPECT_TRUE(contour_edges(quad, HPoint::point({7, 0, -2})).empty());
-  // The directed edges run so that weight > 0: seen from above (light
+  // The directed edges run so that nb_c > 0: seen from above (light
   // facing? the quad runs clockwise from +y, so it is averted) the edges keep
   // the polygon's direction; seen from below they are reversed.
   const auto above = contour_edges(quad, HPoint::point({0.5, 3, 0.5}));
@@ -85,7 +85,7 @@ TEST(ContourEdges, SingleQuadHasFourBoundaryEdgesUnlessTheLightIsInItsPlane) {
 
 TEST(ContourEdges, NonManifoldFinsSumTheirWeights) {
   // Three triangles share the edge (0,0,0)→(1,0,0), all running along it:
-  // A (facing the light), B and C (averted). Edge weight: -(+1) - (-1) - (-1) = 1.
+  // A (facing the light), B and C (averted). Edge nb_c: -(+1) - (-1) - (-1) = 1.
   Model fins;
   fins.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, 0, 1}, {0.5, -1, 0}};
   fins.polygons = {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}};
@@ -94,12 +94,12 @@ TEST(ContourEdges, NonManifoldFinsSumTheirWeights) {
   EXPECT_EQ(polygon_facing(fins, fins.polygons[1], light), Sign::negative);
   EXPECT_EQ(polygon_facing(fins, fins.polygons[2], light), Sign::negative);
   const auto edges = contour_edges(fins, light);
-  EXPECT_EQ(weights(edges), (std::map<int, int>{{1, 7}}));
+  EXPECT_EQ(nb_c_counts(edges), (std::map<int, int>{{1, 7}}));
   const auto shared = std::find_if(edges.begin(), edges.end(), [](const ContourEdge& e) {
     return std::min(e.from, e.to) == 0 && std::max(e.from, e.to) == 1;
   });
   ASSERT_NE(shared, edges.end());
-  EXPECT_EQ(shared->from, 0u);  // weight +1 along 0 → 1
+  EXPECT_EQ(shared->from, 0u);  // nb_c +1 along 0 → 1
   const EdgeTopology t = edge_topology(fins);
   EXPECT_EQ(t.non_manifold_edges, 1u);
   EXPECT_EQ(t.boundary_edges, 6u);
@@ -117,7 +117,7 @@ TEST(ContourEdges, DuplicatedVerticesStillShareTheirEdges) {
     }
     soup.polygons.push_back(q);
   }
-  EXPECT_EQ(weights(contour_edges(soup, HPoint::point({0.5, 5, 0.5}))), (std::map<int, int>{{2, 4}}));
+  EXPECT_EQ(nb_c_counts(contour_edges(soup, HPoint::point({0.5, 5, 0.5}))), (std::map<int, int>{{2, 4}}));
   EXPECT_EQ(edge_topology(soup).manifold_edges, 12u);
 }
 

@@ -1,7 +1,7 @@
 // Far ends on a sphere about a point light (geometry/volumes/sphere_ends.h) and the
-// exact directions they are built from (geometry/exact/directions.h),
+// exact directions they are built from (geometry/exact/constructions.h),
 // checked against exact rational arithmetic where doubles cancel to noise.
-#include <geometry/exact/directions.h>
+#include <geometry/exact/constructions.h>
 #include <geometry/volumes/sphere_ends.h>
 #include <gtest/gtest.h>
 

@@ -268,13 +268,13 @@ TEST(Scanline, ShadowPolygonAddsSignedNbCInFrontOfTheSurfaceOnly) {
 
 TEST(ScanlineEyePlanes, CountAtEveryPixelOnTheirSideAndFlagThoseOnThePlane) {
   // The floor fills the view. Eye planes through the eye (0, 0, 5): x = 0
-  // with weight 3 for rays towards +x; y = x with a twisted group set at the
+  // with nb_c 3 for rays towards +x; y = x with a twisted group set at the
   // eye, toggled for rays towards y > x (so -1 there); and z = 5 (every ray
-  // lies on one side of it, below) with weight 0, which only flags: nothing.
+  // lies on one side of it, below) with nb_c 0, which only flags: nothing.
   const CameraFrame frame = front_camera(17, 16);  // column 8 looks along x = 0
   const std::vector<RasterPolygon> polys{surface(square_z(-8, -8, 8, 8, 0), 1)};
   const std::vector<std::uint8_t> groups{1};
-  const std::vector<EyePlane> planes{{.normal = {1, 0, 0}, .light = 0, .weight = 3},
+  const std::vector<EyePlane> planes{{.normal = {1, 0, 0}, .light = 0, .nb_c = 3},
                                      {.normal = {-1, 1, 0}, .light = 1, .group = 0},
                                      {.normal = {0, 0, 1}, .light = 1}};
   const ScanlineResult r = scanline_render(frame, polys, 2, 2, groups, nullptr, true, planes);

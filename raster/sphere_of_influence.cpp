@@ -1,5 +1,5 @@
-#include <raster/light_range.h>
-#include <raster/light_reach.h>
+#include <geometry/exact/predicates.h>
+#include <raster/sphere_of_influence.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@ namespace {
 /// surfaces the sphere truly comes near are left to the exact predicate.
 constexpr double kMargin = 1e-9;
 
-Reach reach_of(const RasterPolygon& p, const geometry::Light& light) {
-  if (light.type != geometry::LightType::point || !light.light_end) return Reach::inside;
+InSphere coverage(const RasterPolygon& p, const geometry::Light& light) {
+  if (light.type != geometry::LightType::point || !light.light_end) return InSphere::inside;
   const double r2 = *light.light_end * *light.light_end;
   // A sample lies in the polygon: no farther from L than its farthest
   // vertex, no nearer than its bounding box.
@@ -31,33 +31,41 @@ Reach reach_of(const RasterPolygon& p, const geometry::Light& light) {
                            std::max({lo.y - c.y, 0.0, c.y - hi.y}),
                            std::max({lo.z - c.z, 0.0, c.z - hi.z})};
   const double near2 = geometry::dot(gap, gap);
-  if (!std::isfinite(far2) || !std::isfinite(r2)) return Reach::cut;
-  if (far2 < r2 * (1 - kMargin)) return Reach::inside;
-  if (near2 > r2 * (1 + kMargin)) return Reach::outside;
-  return Reach::cut;
+  if (!std::isfinite(far2) || !std::isfinite(r2)) return InSphere::cut;
+  if (far2 < r2 * (1 - kMargin)) return InSphere::inside;
+  if (near2 > r2 * (1 + kMargin)) return InSphere::outside;
+  return InSphere::cut;
 }
 
 }  // namespace
 
-ReachTable::ReachTable(std::span<const RasterPolygon> surfaces,
-                       std::span<const geometry::Light> lights)
+bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
+                  const geometry::HitTriangle& tri) {
+  if (light.type != geometry::LightType::point || !light.light_end) return false;
+  return geometry::compare_hit_distance(ray.origin, ray.direction, tri.a, tri.b, tri.c,
+                                        light.position,
+                                        *light.light_end) == geometry::Sign::positive;
+}
+
+SphereTable::SphereTable(std::span<const RasterPolygon> surfaces,
+                         std::span<const geometry::Light> lights)
     : lights_(lights.size()) {
   std::uint32_t count = 0;
   for (const RasterPolygon& p : surfaces)
     if (p.kind == RasterPolygon::Kind::surface) count = std::max(count, p.id + 1);
-  reach_.assign(static_cast<std::size_t>(count) * lights_, Reach::cut);
+  table_.assign(static_cast<std::size_t>(count) * lights_, InSphere::cut);
   for (const RasterPolygon& p : surfaces) {
     if (p.kind != RasterPolygon::Kind::surface || p.vertices.empty()) continue;
     for (std::size_t l = 0; l < lights_; ++l)
-      reach_[static_cast<std::size_t>(p.id) * lights_ + l] = reach_of(p, lights[l]);
+      table_[static_cast<std::size_t>(p.id) * lights_ + l] = coverage(p, lights[l]);
   }
 }
 
-bool ReachTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
-                              const geometry::SampleRay& ray,
-                              const geometry::HitTriangle& tri) const {
-  const Reach r = at(surface, l);
-  return r == Reach::outside || (r == Reach::cut && raster::out_of_range(light, ray, tri));
+bool SphereTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
+                               const geometry::SampleRay& ray,
+                               const geometry::HitTriangle& tri) const {
+  const InSphere r = at(surface, l);
+  return r == InSphere::outside || (r == InSphere::cut && raster::out_of_range(light, ray, tri));
 }
 
 }  // namespace umbra::raster

@@ -1,5 +1,6 @@
 #include <CGAL/Gmpq.h>
-#include <geometry/exact/directions.h>
+#include <geometry/exact/constructions.h>
+#include <geometry/exact/exact_arithmetic.h>
 #include <gmp.h>
 
 #include <algorithm>
@@ -74,6 +75,17 @@ Vec3 exact_normal(const Vec3& p, const Vec3& q, const Vec3& r) {
 
 Vec3 exact_cross(const Vec3& a, const Vec3& b, const Vec3& d) {
   return rounded_direction(cross(sub(b, a), {Q(d.x), Q(d.y), Q(d.z)}));
+}
+
+// The determinants exactly (Mpzf, as the predicates take them), each
+// rounded to double, then one division: a few ulps, as promised.
+double ray_plane_parameter(const Vec3& eye, const Vec3& d, const Vec3& a, const Vec3& b,
+                           const Vec3& c) {
+  const detail::V3<detail::Exact> ab = detail::sub<detail::Exact>(b, a),
+                                  ac = detail::sub<detail::Exact>(c, a);
+  const detail::Exact f = detail::det(ab, ac, detail::sub<detail::Exact>(eye, a));
+  const detail::Exact g = detail::det(ab, ac, detail::vec<detail::Exact>(d));
+  return -CGAL::to_double(f) / CGAL::to_double(g);
 }
 
 }  // namespace umbra::geometry

@@ -1,8 +1,8 @@
-// ReachTable: which surfaces a limited light's sphere holds whole, misses or
+// SphereTable: which surfaces a limited light's sphere holds whole, misses or
 // cuts. Every answer other than `cut` skips the exact range predicate, so
 // each must be certain; the boundary cases must come out `cut`.
 #include <gtest/gtest.h>
-#include <raster/light_reach.h>
+#include <raster/sphere_of_influence.h>
 
 #include <vector>
 
@@ -23,19 +23,19 @@ geometry::Light limited(double reach) {
   return l;
 }
 
-TEST(LightReach, InsideOutsideAndCutSurfaces) {
+TEST(SphereOfInfluence, InsideOutsideAndCutSurfaces) {
   // Farthest vertex of quad 0: |(1, 0.5, 0)| = 1.118 < 2; nearest point of
   // quad 1: x = 3 > 2; quad 2 runs from x = 1 to x = 3.
   const std::vector<RasterPolygon> surfaces = {quad_at_x(0.5, 1, 0), quad_at_x(3, 4, 1),
                                                quad_at_x(1, 3, 2)};
   const std::vector<geometry::Light> lights = {limited(2)};
-  const ReachTable table(surfaces, lights);
-  EXPECT_EQ(table.at(0, 0), Reach::inside);
-  EXPECT_EQ(table.at(1, 0), Reach::outside);
-  EXPECT_EQ(table.at(2, 0), Reach::cut);
+  const SphereTable table(surfaces, lights);
+  EXPECT_EQ(table.at(0, 0), InSphere::inside);
+  EXPECT_EQ(table.at(1, 0), InSphere::outside);
+  EXPECT_EQ(table.at(2, 0), InSphere::cut);
 }
 
-TEST(LightReach, SurfacesTouchingTheSphereAreCut) {
+TEST(SphereOfInfluence, SurfacesTouchingTheSphereAreCut) {
   // Triangle 0 has a vertex exactly on the sphere; quad 1's nearest point
   // lies exactly on it.
   RasterPolygon on_far = quad_at_x(0, 3, 0);
@@ -43,12 +43,12 @@ TEST(LightReach, SurfacesTouchingTheSphereAreCut) {
   RasterPolygon on_near = quad_at_x(3, 4, 1);                // nearest point (3, 0, 0)
   const std::vector<RasterPolygon> surfaces = {on_far, on_near};
   const std::vector<geometry::Light> lights = {limited(3)};
-  const ReachTable table(surfaces, lights);
-  EXPECT_EQ(table.at(0, 0), Reach::cut);
-  EXPECT_EQ(table.at(1, 0), Reach::cut);
+  const SphereTable table(surfaces, lights);
+  EXPECT_EQ(table.at(0, 0), InSphere::cut);
+  EXPECT_EQ(table.at(1, 0), InSphere::cut);
 }
 
-TEST(LightReach, UnlimitedAndDirectionalLightsReachEverything) {
+TEST(SphereOfInfluence, UnlimitedAndDirectionalLightsReachEverything) {
   const std::vector<RasterPolygon> surfaces = {quad_at_x(1e6, 2e6, 0)};
   geometry::Light unlimited;
   unlimited.position = {0, 0, 0};
@@ -56,20 +56,20 @@ TEST(LightReach, UnlimitedAndDirectionalLightsReachEverything) {
   sun.type = geometry::LightType::directional;
   sun.direction = {0, -1, 0};
   const std::vector<geometry::Light> lights = {unlimited, sun};
-  const ReachTable table(surfaces, lights);
-  EXPECT_EQ(table.at(0, 0), Reach::inside);
-  EXPECT_EQ(table.at(0, 1), Reach::inside);
+  const SphereTable table(surfaces, lights);
+  EXPECT_EQ(table.at(0, 0), InSphere::inside);
+  EXPECT_EQ(table.at(0, 1), InSphere::inside);
 }
 
-TEST(LightReach, ShadowPolygonsAreIgnored) {
+TEST(SphereOfInfluence, ShadowPolygonsAreIgnored) {
   // A shadow polygon with id 5 far outside the sphere must neither size the
   // table nor overwrite surface 0's entry.
   RasterPolygon shadow = quad_at_x(10, 11, 0);
   shadow.kind = RasterPolygon::Kind::shadow;
   const std::vector<RasterPolygon> surfaces = {quad_at_x(0.1, 0.2, 0), shadow};
   const std::vector<geometry::Light> lights = {limited(1)};
-  const ReachTable table(surfaces, lights);
-  EXPECT_EQ(table.at(0, 0), Reach::inside);
+  const SphereTable table(surfaces, lights);
+  EXPECT_EQ(table.at(0, 0), InSphere::inside);
 }
 
 }  // namespace

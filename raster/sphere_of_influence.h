@@ -1,0 +1,55 @@
+#pragma once
+// A limited light's sphere of influence (DESIGN.md: a sample is out of range
+// when |H - L| > light_end), decided for the visible samples of the
+// scanline's surfaces: once per (surface, light), whether the sphere holds
+// the surface whole, misses it, or cuts it, so that a sample on a surface
+// wholly inside or outside needs no predicate at all (with many lights of
+// small reach, Bergeron's street lights, nearly every pair is one of the
+// first two); where the sphere cuts the surface, the exact predicate decides
+// each sample. The same class for every method that renders from the
+// scanline's visible surface.
+#include <geometry/exact/visible_surface.h>
+#include <geometry/sample_ray.h>
+#include <geometry/scene.h>
+#include <raster/scanline/scanline.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace umbra::raster {
+
+/// Out of range decided exactly on the plane of the visible triangle `tri`
+/// (H is where `ray` meets it): |H - L| > light_end. Equality is a boundary,
+/// taken as in range; directional and unlimited lights are never out of range.
+bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
+                  const geometry::HitTriangle& tri);
+
+enum class InSphere : std::uint8_t {
+  inside,   ///< every point of the surface is within light_end (or the light is unlimited)
+  outside,  ///< every point is beyond light_end
+  cut,      ///< the sphere cuts the surface: decide each sample exactly
+};
+
+class SphereTable {
+ public:
+  /// `surfaces`: the surface polygons (kind surface; their ids index the
+  /// table); shadow polygons among them are ignored.
+  SphereTable(std::span<const RasterPolygon> surfaces, std::span<const geometry::Light> lights);
+
+  InSphere at(std::uint32_t surface, std::uint32_t light) const {
+    return table_[static_cast<std::size_t>(surface) * lights_ + light];
+  }
+
+  /// Whether the sample of `ray` on `tri`, a triangle of surface `surface`,
+  /// is out of range of `light` (index `l`): from the table, and with the
+  /// exact predicate only where the sphere cuts the surface.
+  bool out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
+                    const geometry::SampleRay& ray, const geometry::HitTriangle& tri) const;
+
+ private:
+  std::size_t lights_ = 0;
+  std::vector<InSphere> table_;
+};
+
+}  // namespace umbra::raster
