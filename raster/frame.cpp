@@ -1,5 +1,5 @@
 #include <raster/frame.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 
 namespace umbra::raster {
 
@@ -9,7 +9,7 @@ Frame::Frame(int w, int h, std::size_t lights, unsigned threads)
   // One buffer per job: each is allocated and first touched by the thread
   // that fills it.
   const auto buffers = static_cast<int>(2 + 2 * lights);
-  util::parallel_rows(buffers, threads, [&](int k) {
+  util::parallel_for(buffers, threads, [&](int k) {
     if (k == 0)
       beauty.assign(pixels * 3, 0.0f);
     else if (k == 1)

@@ -2,7 +2,7 @@
 #include <util/input_error.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <raster/frame.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <raster/validate.h>
 
 #include <cmath>
@@ -106,7 +106,7 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
   const int chunks = static_cast<int>((truth.pixels.size() + kChunk - 1) / kChunk);
   util::Progress progress(options.progress);
   progress.phase("validate", static_cast<std::uint64_t>(chunks));
-  util::parallel_rows(chunks, options.threads, [&](int c) {
+  util::parallel_for(chunks, options.threads, [&](int c) {
     const std::size_t end = std::min(truth.pixels.size(), static_cast<std::size_t>(c + 1) * kChunk);
     for (std::size_t k = static_cast<std::size_t>(c) * kChunk; k < end; ++k) {
       const std::size_t p = truth.pixels[k];

@@ -1,5 +1,5 @@
 #include <raster/methods/embree_scene.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 
 #include <array>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Method::exact: the ground truth, one oracle query per pixel and light.
 #include <geometry/oracle/shadow_oracle.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <raster/pixel_sample.h>
 #include <raster/methods/render_methods.h>
 #include <raster/scanline/surface_table.h>
@@ -19,7 +19,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   util::Progress progress(options.progress);
   progress.phase("exact", static_cast<std::uint64_t>(camera.height));
 
-  util::parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_for(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);

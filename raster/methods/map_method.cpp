@@ -9,7 +9,7 @@
 #include <geometry/box.h>
 #include <geometry/exact/predicates.h>
 #include <raster/sphere_of_influence.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <util/phase_clock.h>
 #include <raster/pixel_sample.h>
 #include <raster/methods/render_methods.h>
@@ -116,7 +116,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   std::atomic<std::uint64_t> fallbacks{0};
   Frame frame(camera.width, camera.height, lights, options.threads);
   progress.phase("visible", static_cast<std::uint64_t>(camera.height));
-  util::parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_for(camera.height, options.threads, [&](int j) {
     std::vector<std::uint32_t> row_needed(lights, 0);
     std::uint64_t row_fallbacks = 0;
     for (int i = 0; i < camera.width; ++i) {
@@ -204,7 +204,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   start = util::Clock::now();
   std::atomic<std::uint64_t> lookups{0};
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
-  util::parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_for(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
     std::uint64_t row_lookups = 0;
     for (int i = 0; i < camera.width; ++i) {

@@ -6,7 +6,7 @@
 // (acne, leaks, misses at shared edges) is the method's error, which the
 // validator counts.
 #include <raster/methods/embree_scene.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <util/phase_clock.h>
 #include <raster/pixel_sample.h>
 #include <raster/methods/render_methods.h>
@@ -141,7 +141,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
   const auto width = static_cast<std::size_t>(camera.width);
   std::atomic<std::uint64_t> shadow_rays{0};
   progress.phase("rays", static_cast<std::uint64_t>(camera.height));
-  util::parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_for(camera.height, options.threads, [&](int j) {
     // Primary rays of a row are coherent; Embree's stream API packs them.
     std::vector<RTCRayHit> primary(width);
     primary_rays(camera, j, primary);

@@ -2,7 +2,7 @@
 // crossings of the polygon's edges with the row's centre line, sorted; texels
 // whose centres lie between the 1st and 2nd, 3rd and 4th, ... crossing are
 // covered. Depth is the occluder's plane along each texel's ray.
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <raster/methods/shadow_map.h>
 
 #include <algorithm>
@@ -203,7 +203,7 @@ DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluder
   for (const Occluder& o : occluders)
     if (std::optional<Projected> p = project_occluder(view, o)) projected.push_back(std::move(*p));
   const int bands = (map.size + kBandRows - 1) / kBandRows;
-  util::parallel_rows(bands, threads, [&](int band) {
+  util::parallel_for(bands, threads, [&](int band) {
     const int j0 = band * kBandRows, j1 = std::min(map.size, j0 + kBandRows);
     std::vector<double> xs;
     for (const Projected& p : projected)

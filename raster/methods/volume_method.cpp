@@ -9,7 +9,7 @@
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/crossings.h>
 #include <raster/sphere_of_influence.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <util/phase_clock.h>
 #include <raster/pixel_sample.h>
 #include <raster/methods/render_methods.h>
@@ -170,7 +170,7 @@ Frame render_volume(const geometry::SceneIndex& index,
     }
   };
   progress.phase("shading", static_cast<std::uint64_t>(camera.height));
-  util::parallel_rows(camera.height, options.threads, [&](int j) {
+  util::parallel_for(camera.height, options.threads, [&](int j) {
     PixelSample sample(lights);
     std::uint64_t row_fallbacks = 0, row_recounts = 0;
     for (int i = 0; i < camera.width; ++i) {

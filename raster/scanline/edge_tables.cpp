@@ -1,7 +1,7 @@
 // Preparing the scanline's input (raster/scanline/edge_tables.h): projection, the edge
 // table and its bucket sorts, the strips' geometry.
-#include <util/parallel_rows.h>
 #include <raster/scanline/edge_tables.h>
+#include <util/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -163,17 +163,9 @@ TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double r
   return t;
 }
 
-/// Calls work(begin, end) over [0, count) in blocks, on up to `threads`
-/// threads; each index is handled alone, so the split changes nothing.
-template <class Work>
-void parallel_blocks(std::size_t count, unsigned threads, Work&& work) {
-  constexpr std::size_t kBlock = 2048;
-  const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
-  util::parallel_rows(blocks, threads, [&](int b) {
-    const std::size_t begin = static_cast<std::size_t>(b) * kBlock;
-    work(begin, std::min(count, begin + kBlock));
-  });
-}
+/// Polygons per block of the preparation passes: each index is handled
+/// alone, so the split changes nothing but the scheduling cost.
+constexpr std::size_t kBlock = 2048;
 
 /// Every shadow polygon's edges and strips side by side (EdgeTables::shadow_edges,
 /// shadow_strips), its span of rows, and the polygons bucketed by first row.
@@ -190,7 +182,7 @@ void shadow_tables(EdgeTables& scene, std::span<const std::size_t> first_edge, u
   }
   scene.shadow_edges.resize(count);
   scene.shadow_strips.resize(count);
-  parallel_blocks(polygons, threads, [&](std::size_t begin, std::size_t end) {
+  util::parallel_for_blocks(polygons, kBlock, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) {
       ShadowSpan& span = scene.shadow_spans[k];
       for (std::uint32_t n = span.begin; n < span.end; ++n) {
@@ -257,7 +249,8 @@ void check_input(std::span<const RasterPolygon> input, std::size_t lights,
 }  // namespace
 
 EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
-              std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads) {
+                   std::size_t lights, std::span<const std::uint8_t> group_start,
+                   unsigned threads) {
   check_input(input, lights, group_start);
   EdgeTables scene;
   scene.lights = lights;
@@ -273,7 +266,7 @@ EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPol
     room[k + 1] = room[k] + edge_room(input[k].vertices.size());
   scene.edge_store.resize(room.back());
   scene.polygons.resize(input.size());
-  parallel_blocks(input.size(), threads, [&](std::size_t begin, std::size_t end) {
+  util::parallel_for_blocks(input.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
       scene.polygons[k] =
           project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
@@ -294,35 +287,36 @@ EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPol
   util::reserve_huge(scene.cullable, scene.polygons.size());
   scene.cullable.assign(scene.polygons.size(), 0);
   scene.floors.resize(scene.polygons.size());
-  parallel_blocks(scene.polygons.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const ProjectedPolygon& polygon = scene.polygons[k];
-      const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
-      // BandWorker::behind_band widens a polygon's box by a pixel, which must hold
-      // its edges' strips and the rounding of its clip at the band's rows, a
-      // few ulps of |xa| + |xb| (1e-3 px at 1e12): polygons with wider strips
-      // or farther-off coordinates are always scanned. Clipped shadow
-      // polygons reach 1e11 pixels and cover much of the image: they must
-      // not be left out.
-      bool cullable = shadow && polygon.status == ProjectedPolygon::Status::active;
-      for (std::size_t n = 0; n < polygon.edges.size(); ++n) {
-        const ProjectedEdge& e = polygon.edges[n];
-        TableEdge& t = scene.edges[first_edge[k] + n];
-        t = table_edge(e, camera, ray_slant);
-        t.shadow = shadow;
-        cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e12 &&
-                   std::abs(e.ya) < 1e12 && std::abs(e.xb) < 1e12 && std::abs(e.yb) < 1e12;
-      }
-      scene.cullable[k] = cullable;
-      // The bounding box holds every endpoint's error; widened by a pixel
-      // like the band's box (BandWorker::behind_band), and cut to the rows.
-      if (cullable)
-        scene.floors[k] =
-            depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1,
-                        std::max(polygon.bbox_y0 - 1, 0.0),
-                        std::min(polygon.bbox_y1 + 1, static_cast<double>(frame.height)));
-    }
-  });
+  util::parallel_for_blocks(
+      scene.polygons.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+          const ProjectedPolygon& polygon = scene.polygons[k];
+          const bool shadow = polygon.kind == RasterPolygon::Kind::shadow;
+          // BandWorker::behind_band widens a polygon's box by a pixel, which must hold
+          // its edges' strips and the rounding of its clip at the band's rows, a
+          // few ulps of |xa| + |xb| (1e-3 px at 1e12): polygons with wider strips
+          // or farther-off coordinates are always scanned. Clipped shadow
+          // polygons reach 1e11 pixels and cover much of the image: they must
+          // not be left out.
+          bool cullable = shadow && polygon.status == ProjectedPolygon::Status::active;
+          for (std::size_t n = 0; n < polygon.edges.size(); ++n) {
+            const ProjectedEdge& e = polygon.edges[n];
+            TableEdge& t = scene.edges[first_edge[k] + n];
+            t = table_edge(e, camera, ray_slant);
+            t.shadow = shadow;
+            cullable = cullable && t.near_margin < 0.25 && std::abs(e.xa) < 1e12 &&
+                       std::abs(e.ya) < 1e12 && std::abs(e.xb) < 1e12 && std::abs(e.yb) < 1e12;
+          }
+          scene.cullable[k] = cullable;
+          // The bounding box holds every endpoint's error; widened by a pixel
+          // like the band's box (BandWorker::behind_band), and cut to the rows.
+          if (cullable)
+            scene.floors[k] =
+                depth_floor(polygon, camera, polygon.bbox_x0 - 1, polygon.bbox_x1 + 1,
+                            std::max(polygon.bbox_y0 - 1, 0.0),
+                            std::min(polygon.bbox_y1 + 1, static_cast<double>(frame.height)));
+        }
+      });
   bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,
               scene.by_scan_row_last);
   bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket,

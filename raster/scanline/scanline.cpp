@@ -25,7 +25,7 @@
 // Every pixel that a floating-point decision could have got wrong is flagged
 // `uncertain` (raster/scanline/uncertainty_flags.cpp); the bounds are stated where they are used.
 #include <raster/scanline/band_scheduler.h>
-#include <util/parallel_rows.h>
+#include <util/parallel_for.h>
 #include <raster/scanline/scanline.h>
 #include <raster/scanline/band_worker.h>
 
@@ -86,10 +86,10 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   std::vector<std::uint64_t> spans(static_cast<std::size_t>(workers), 0);
   std::vector<std::uint64_t> skipped(static_cast<std::size_t>(workers), 0);
   // One item per worker, each with its own BandWorker (active lists, per-polygon
-  // state) taking bands from the scheduler; parallel_rows rethrows a
+  // state) taking bands from the scheduler; parallel_for rethrows a
   // worker's exception here.
   BandScheduler schedule(bands, workers);
-  util::parallel_rows(workers, static_cast<unsigned>(workers), [&](int w) {
+  util::parallel_for(workers, static_cast<unsigned>(workers), [&](int w) {
     detail::BandWorker band(scene, result, progress);
     for (int b = schedule.next(w); b >= 0; b = schedule.next(w))
       band.run(b * kBand, std::min(frame.height, (b + 1) * kBand));

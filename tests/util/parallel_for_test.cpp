@@ -1,13 +1,13 @@
-// parallel_for: every item exactly once on any thread count, and the first
-// exception of a worker reaches the caller.
-#include <util/parallel_for.h>
+// parallel_for and parallel_for_blocks: every item exactly once on any
+// thread count, and the first exception of a worker reaches the caller.
 #include <gtest/gtest.h>
+#include <util/parallel_for.h>
 
 #include <atomic>
 #include <stdexcept>
 #include <vector>
 
-namespace umbra::geometry {
+namespace umbra::util {
 namespace {
 
 TEST(ParallelFor, CallsEveryItemOnce) {
@@ -31,10 +31,10 @@ TEST(ParallelFor, RethrowsAWorkersException) {
   for (const unsigned threads : {1u, 2u, 3u}) {
     std::atomic<int> after{0};
     EXPECT_THROW(util::parallel_for(50, threads,
-                              [&](std::size_t i) {
-                                if (i == 7) throw std::runtime_error("item 7");
-                                ++after;
-                              }),
+                                    [&](std::size_t i) {
+                                      if (i == 7) throw std::runtime_error("item 7");
+                                      ++after;
+                                    }),
                  std::runtime_error)
         << threads << " threads";
     EXPECT_LT(after, 50);
@@ -52,5 +52,21 @@ TEST(ParallelFor, RethrowsTheExceptionOfTheOnlyFailingItem) {
   }
 }
 
+TEST(ParallelForBlocks, CoversEveryIndexOnceInBlocksOfTheGivenSize) {
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    for (const std::size_t count : {0u, 1u, 7u, 64u, 1000u}) {
+      std::vector<std::atomic<int>> calls(count);
+      std::atomic<bool> bad_block{false};
+      util::parallel_for_blocks(count, 7, threads, [&](std::size_t begin, std::size_t end) {
+        // Blocks start on multiples of the block size and hold at most it.
+        if (begin % 7 != 0 || end <= begin || end - begin > 7 || end > count) bad_block = true;
+        for (std::size_t i = begin; i < end; ++i) ++calls[i];
+      });
+      EXPECT_FALSE(bad_block) << count << " items, " << threads << " threads";
+      for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(calls[i], 1) << "item " << i;
+    }
+  }
+}
+
 }  // namespace
-}  // namespace umbra::geometry
+}  // namespace umbra::util
