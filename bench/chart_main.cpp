@@ -3,25 +3,25 @@
 // scores each against the exact oracle on the same seeded samples, and runs
 // the stability sweeps; writes one CSV that scripts/chart.py draws.
 // scripts/chart.sh is the documented command (docs/methods.md).
-#include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <fuzz/scene_export.h>
-#include <util/atomic_files.h>
 #include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
-
-#include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cstdio>
-#include <filesystem>
-#include <sstream>
-#include <string>
-#include <vector>
+#include <util/atomic_files.h>
 
 #include "bench_scene.h"
 #include "chart_run.h"
 #include "city_scene.h"
 #include "error_picture.h"
 #include "sweep_scenes.h"
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace umbra::bench {
 namespace {
@@ -37,8 +37,8 @@ struct Args {
   std::string only;    ///< run only scenes / sweeps whose name contains this
   std::vector<std::string> methods = {"plain", "volume", "map", "ray"};
   bool sweeps = true, scenes = true;
-  std::string images;  ///< if set: an error picture per row written here
-  std::string dump;    ///< if set: every scene written here as scene JSON
+  std::string images;   ///< if set: an error picture per row written here
+  std::string dump;     ///< if set: every scene written here as scene JSON
   int city_blocks = 0;  ///< 0: 7 (3 with --quick)
 };
 

@@ -1,7 +1,8 @@
 #include "chart_run.h"
 
-#include <fmt/format.h>
 #include <raster/image_io.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,9 +1,9 @@
 #include "city_scene.h"
 
+#include "scene_parts.h"
+
 #include <random>
 #include <string>
-
-#include "scene_parts.h"
 
 namespace umbra::bench {
 

@@ -11,11 +11,13 @@
 // fallbacks, samples/s (pixels x lights per second), spans/s, (shadow polygon, band) pairs skipped,
 // and the seconds of each phase of the last run. The ratio shadowed/plain is computed by
 // scripts/bench_table.py from the JSON output.
-#include <benchmark/benchmark.h>
 #include <fuzz/scene_export.h>
-#include <util/atomic_files.h>
 #include <raster/render.h>
 #include <raster/validate.h>
+#include <util/atomic_files.h>
+
+#include "bench_scene.h"
+#include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -24,8 +26,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include "bench_scene.h"
 
 namespace umbra::bench {
 namespace {

@@ -1,11 +1,11 @@
 #include "sweep_scenes.h"
 
+#include "scene_parts.h"
+
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <random>
-
-#include "scene_parts.h"
 
 namespace umbra::bench {
 

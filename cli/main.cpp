@@ -2,15 +2,16 @@
 // messages and exit codes in cli/verb_runner.h (docs/cli.md). `umbra fuzz`
 // runs the separate program umbra-fuzz beside this one, so that the
 // production executable carries no fuzzing code.
+#include <CLI/CLI.hpp>
 #include <cli/exit_codes.h>
 #include <cli/render_command.h>
 #include <cli/validate_command.h>
 #include <cli/verb_runner.h>
 #include <cli/volume_command.h>
+
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -78,7 +79,8 @@ int main(int argc, char** argv) {
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
   // Listed in --help only: main() hands `fuzz` to umbra-fuzz before parsing.
-  app.add_subcommand("fuzz", "Degenerate scenes and real models: check, export, sweep (umbra-fuzz)");
+  app.add_subcommand("fuzz",
+                     "Degenerate scenes and real models: check, export, sweep (umbra-fuzz)");
 
   // CLI11 reports an unknown verb as "A subcommand is required"; name it.
   if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != render->get_name() &&

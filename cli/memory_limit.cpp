@@ -1,6 +1,7 @@
 #include <cli/memory_limit.h>
-#include <fmt/format.h>
 #include <util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <charconv>
 #include <cmath>

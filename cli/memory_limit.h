@@ -6,6 +6,7 @@
 // MemAvailable. A verb whose estimate (raster/memory_estimate.h) exceeds it
 // is refused before it starts, in one line, exit 2.
 #include <CLI/CLI.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -1,7 +1,8 @@
 #include <cli/output_files.h>
-#include <fmt/format.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
+
+#include <fmt/format.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -50,13 +51,14 @@ void check_output_path(const fs::path& path, std::initializer_list<std::string_v
       std::string allowed;
       for (const auto e : extensions) allowed += (allowed.empty() ? "" : " or ") + std::string(e);
       throw util::InputError(path.string(), fmt::format("unknown output extension '{}'; use {}",
-                                                  path.extension().string(), allowed));
+                                                        path.extension().string(), allowed));
     }
   }
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw util::InputError(path.string(), fmt::format("directory '{}' does not exist", dir.string()));
+    throw util::InputError(path.string(),
+                           fmt::format("directory '{}' does not exist", dir.string()));
   if (fs::is_directory(path, ec))
     throw util::InputError(path.string(), "is a directory; name an output file");
 }
@@ -66,8 +68,9 @@ void check_outputs_distinct(const std::vector<NamedFile>& inputs,
   for (std::size_t o = 0; o < outputs.size(); ++o) {
     const NamedFile& out = outputs[o];
     const auto refuse = [&](const NamedFile& other) {
-      throw util::InputError(out.path.string(), fmt::format("{} names {} '{}' too; choose another file",
-                                                      out.label, other.label, other.path.string()));
+      throw util::InputError(out.path.string(),
+                             fmt::format("{} names {} '{}' too; choose another file", out.label,
+                                         other.label, other.path.string()));
     };
     for (const NamedFile& in : inputs)
       if (same_file(out.path, in.path)) refuse(in);

@@ -1,4 +1,5 @@
 #include <cli/progress_bar.h>
+
 #include <fmt/format.h>
 #include <unistd.h>
 

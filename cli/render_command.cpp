@@ -5,13 +5,14 @@
 #include <cli/progress_bar.h>
 #include <cli/render_command.h>
 #include <cli/stats_json.h>
-#include <fmt/format.h>
-#include <util/phase_clock.h>
-#include <util/input_error.h>
 #include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/render.h>
+#include <util/input_error.h>
+#include <util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cstdio>

@@ -2,6 +2,7 @@
 // `umbra render SCENE [-o OUT] [--method volume|map|ray|exact] [--threads N]
 //                     [--map-* ...] [--ray-epsilon E] [--stats-json FILE] [--quiet]`
 #include <CLI/CLI.hpp>
+
 #include <optional>
 #include <string>
 

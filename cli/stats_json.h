@@ -6,8 +6,9 @@
 #include <raster/render.h>
 #include <raster/validate.h>
 
-#include <cstdint>
 #include <nlohmann/json.hpp>
+
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>

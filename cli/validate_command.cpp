@@ -5,11 +5,12 @@
 #include <cli/progress_bar.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
-#include <fmt/format.h>
 #include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/validate.h>
+
+#include <fmt/format.h>
 
 #include <array>
 #include <chrono>

@@ -2,6 +2,7 @@
 // `umbra validate SCENE --image RENDER.exr [--samples N] [--seed S] [--json]
 //                       [--mask MASK.png] [--threads N] [--quiet]`
 #include <CLI/CLI.hpp>
+
 #include <cstdint>
 #include <string>
 

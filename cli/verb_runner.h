@@ -4,6 +4,7 @@
 // as the user typed `umbra fuzz`): InputError -> "umbra: <what>" and 2;
 // running out of memory -> 2; any other exception -> 3 (a bug).
 #include <CLI/CLI.hpp>
+
 #include <functional>
 #include <string>
 

@@ -4,13 +4,14 @@
 #include <cli/parse_checks.h>
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
-#include <fmt/format.h>
-#include <util/phase_clock.h>
-#include <util/input_error.h>
+#include <geometry/export/volume_export.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/volumes/builder.h>
-#include <geometry/export/volume_export.h>
 #include <raster/memory_estimate.h>
+#include <util/input_error.h>
+#include <util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cstdio>

@@ -1,6 +1,7 @@
 #pragma once
 // `umbra volume SCENE -o OUT.ply|.obj|.off [--stats-json FILE] [--quiet]`
 #include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace umbra::cli {

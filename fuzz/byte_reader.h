@@ -14,7 +14,9 @@ class ByteReader {
 
   std::uint8_t byte() { return pos_ < bytes_.size() ? bytes_[pos_++] : 0; }
   /// An integer in [lo, hi] (lo <= hi), from one byte.
-  int range(int lo, int hi) { return lo + static_cast<int>(byte() % static_cast<unsigned>(hi - lo + 1)); }
+  int range(int lo, int hi) {
+    return lo + static_cast<int>(byte() % static_cast<unsigned>(hi - lo + 1));
+  }
   bool flag() { return (byte() & 1) != 0; }
   std::size_t remaining() const { return bytes_.size() - pos_; }
 

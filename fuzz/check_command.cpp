@@ -1,11 +1,12 @@
 #include <cli/exit_codes.h>
 #include <cli/parse_checks.h>
-#include <fmt/format.h>
 #include <fuzz/check_command.h>
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/scene_check.h>
 #include <fuzz/scene_export.h>
 #include <util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <filesystem>

@@ -1,10 +1,9 @@
 #pragma once
-// `umbra-fuzz check|export|real` (also reached as `umbra fuzz ...`): the degenerate-scene generator of
-// fuzz/degenerate_scenes.h and the real-model sweep of fuzz/real_sweep.h
-// (docs/fuzzing.md).
+// `umbra-fuzz check|export|real` (also reached as `umbra fuzz ...`): the degenerate-scene generator
+// of fuzz/degenerate_scenes.h and the real-model sweep of fuzz/real_sweep.h (docs/fuzzing.md).
+#include <CLI/CLI.hpp>
 #include <fuzz/real_command.h>
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <optional>
 #include <string>

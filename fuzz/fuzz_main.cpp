@@ -1,12 +1,13 @@
 // `umbra-fuzz`: the degenerate-scene generator and the real-model sweep as
 // a program of their own (docs/fuzzing.md), so that the `umbra` executable
 // links no fuzzing code; `umbra fuzz ARGS` runs `umbra-fuzz ARGS`.
+#include <CLI/CLI.hpp>
 #include <cli/exit_codes.h>
 #include <cli/verb_runner.h>
-#include <fmt/format.h>
 #include <fuzz/check_command.h>
 
-#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
 #include <cstdio>
 
 int main(int argc, char** argv) {

@@ -21,7 +21,7 @@ namespace umbra::fuzz {
 }  // namespace umbra::fuzz
 
 /// Not `assert`: stays on in Release builds, where the replays run.
-#define UMBRA_FUZZ_CHECK(harness, cond, what)                                   \
-  do {                                                                          \
+#define UMBRA_FUZZ_CHECK(harness, cond, what)                                           \
+  do {                                                                                  \
     if (!(cond)) ::umbra::fuzz::fail(harness, std::string(#cond " failed: ") + (what)); \
   } while (0)

@@ -5,8 +5,8 @@
 // At most 2^20 pixels, so that a header's claimed size cannot make the
 // fuzzer's own memory limit the finding.
 #include <fuzz/harness.h>
-#include <util/input_error.h>
 #include <raster/image_io.h>
+#include <util/input_error.h>
 
 #include <string_view>
 

@@ -2,11 +2,11 @@
 // by UMBRA_FUZZ_MESH_EXT ("off", "obj", "ply", "stl"). Must load or throw
 // InputError; a loaded soup holds finite vertices and polygons of >= 3
 // in-range indices; small soups get a shadow volume that must be closed.
-#include <geometry/volumes/closure_check.h>
 #include <fuzz/harness.h>
-#include <util/input_error.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/volumes/builder.h>
+#include <geometry/volumes/closure_check.h>
+#include <util/input_error.h>
 
 #include <algorithm>
 #include <cmath>

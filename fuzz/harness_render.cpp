@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.height = 18;
   const geometry::Scene scene = fuzz::decode_scene(in, limits);
   // UMBRA_FUZZ_PRINT=1: print the decoded scene first (to debug a crash).
-  if (std::getenv("UMBRA_FUZZ_PRINT")) std::fprintf(stderr, "scene: %s\n", fuzz::scene_to_json(scene).c_str());
+  if (std::getenv("UMBRA_FUZZ_PRINT"))
+    std::fprintf(stderr, "scene: %s\n", fuzz::scene_to_json(scene).c_str());
   raster::RenderOptions options;
   options.method = raster::Method::volume;
   options.threads = 1;

@@ -14,8 +14,8 @@
 // - folds_seen_from(reversed with v0 kept first, -facing) equals
 //   folds_seen_from(polygon, facing) (the same fan, turned over), and
 //   neither changes under exact rescaling.
-#include <fuzz/harness.h>
 #include <fuzz/byte_reader.h>
+#include <fuzz/harness.h>
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/volumes/twist.h>
 
@@ -44,8 +44,8 @@ std::vector<Vec3> place(const std::vector<IVec>& iv, double s, const IVec& t) {
 
 HPoint place_light(const IVec& l, bool finite, double s, const IVec& t) {
   if (!finite)
-    return HPoint::at_infinity({static_cast<double>(l[0]), static_cast<double>(l[1]),
-                                static_cast<double>(l[2])});
+    return HPoint::at_infinity(
+        {static_cast<double>(l[0]), static_cast<double>(l[1]), static_cast<double>(l[2])});
   return HPoint::point({static_cast<double>(l[0] + t[0]) * s, static_cast<double>(l[1] + t[1]) * s,
                         static_cast<double>(l[2] + t[2]) * s});
 }
@@ -84,12 +84,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const IVec& c = iv[static_cast<std::size_t>(in.range(0, n - 1))];
   const long s1 = in.range(-2, 3), s2 = in.range(-2, 2);
   switch (in.range(0, 5)) {
-    case 0: l = {in.range(-9, 9), in.range(-9, 9), in.range(-9, 9)}; break;
-    case 1: l = a; break;
-    case 2: for (int i = 0; i < 3; ++i) l[i] = a[i] + s1 * (b[i] - a[i]); break;
-    case 3: for (int i = 0; i < 3; ++i) l[i] = a[i] + s1 * (b[i] - a[i]) + s2 * (c[i] - a[i]); break;
-    case 4: finite = false; l = {in.range(-3, 3), in.range(-3, 3), in.range(-3, 3)}; break;
-    default: finite = false; for (int i = 0; i < 3; ++i) l[i] = s1 * (b[i] - a[i]) + s2 * (c[i] - a[i]); break;
+    case 0:
+      l = {in.range(-9, 9), in.range(-9, 9), in.range(-9, 9)};
+      break;
+    case 1:
+      l = a;
+      break;
+    case 2:
+      for (int i = 0; i < 3; ++i) l[i] = a[i] + s1 * (b[i] - a[i]);
+      break;
+    case 3:
+      for (int i = 0; i < 3; ++i) l[i] = a[i] + s1 * (b[i] - a[i]) + s2 * (c[i] - a[i]);
+      break;
+    case 4:
+      finite = false;
+      l = {in.range(-3, 3), in.range(-3, 3), in.range(-3, 3)};
+      break;
+    default:
+      finite = false;
+      for (int i = 0; i < 3; ++i) l[i] = s1 * (b[i] - a[i]) + s2 * (c[i] - a[i]);
+      break;
   }
   if (!finite && l == IVec{0, 0, 0}) l = {0, 1, 0};
 
@@ -139,10 +153,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // neither fan folds nor wraps around L (then both cover the same side).
   const Sign rotated_facing = geometry::projected_facing(rotated, light);
   const Sign reversed_facing = geometry::projected_facing(reversed, light);
-  const bool same_region =
-      shape == geometry::PolygonShape::planar || !finite ||
-      (!folds && !geometry::folds_seen_from(rotated, light, rotated_facing) &&
-       !geometry::folds_seen_from(reversed, light, reversed_facing));
+  const bool same_region = shape == geometry::PolygonShape::planar || !finite ||
+                           (!folds && !geometry::folds_seen_from(rotated, light, rotated_facing) &&
+                            !geometry::folds_seen_from(reversed, light, reversed_facing));
   if (same_region) {
     UMBRA_FUZZ_CHECK(kName, rotated_facing == facing, "facing rotated " + what);
     UMBRA_FUZZ_CHECK(kName, reversed_facing == -facing, "facing reversed " + what);

@@ -2,11 +2,11 @@
 // lattice vertices at scales 1e-6 .. 1e6, any polygons, lights on vertices,
 // edge lines and face planes). The weighted boundary of every light's faces
 // must cancel edge by edge (closure_check.h), vertices must stay finite.
-#include <geometry/volumes/closure_check.h>
 #include <fuzz/harness.h>
 #include <fuzz/scene_decoder.h>
 #include <fuzz/scene_export.h>
 #include <geometry/volumes/builder.h>
+#include <geometry/volumes/closure_check.h>
 
 using namespace umbra;
 
@@ -18,7 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   limits.max_polygons = 8;
   const geometry::Scene scene = fuzz::decode_scene(in, limits);
   // UMBRA_FUZZ_PRINT=1: print the decoded scene first (to debug a crash).
-  if (std::getenv("UMBRA_FUZZ_PRINT")) std::fprintf(stderr, "scene: %s\n", fuzz::scene_to_json(scene).c_str());
+  if (std::getenv("UMBRA_FUZZ_PRINT"))
+    std::fprintf(stderr, "scene: %s\n", fuzz::scene_to_json(scene).c_str());
   geometry::VolumeOptions options;
   options.caps = true;
   options.threads = 1;  // libFuzzer runs many small inputs: no thread per light

@@ -1,5 +1,6 @@
-#include <fmt/format.h>
 #include <fuzz/light_placement.h>
+
+#include <fmt/format.h>
 
 namespace umbra::fuzz {
 

@@ -1,9 +1,9 @@
-#include <geometry/volumes/closure_check.h>
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
 #include <geometry/exact/coordinate_range.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/volumes/builder.h>
+#include <geometry/volumes/closure_check.h>
 
 #include <algorithm>
 #include <cmath>

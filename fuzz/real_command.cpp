@@ -1,11 +1,12 @@
 #include <cli/exit_codes.h>
-#include <fuzz/real_command.h>
 #include <cli/parse_checks.h>
-#include <fmt/format.h>
 #include <fuzz/mesh_catalog.h>
+#include <fuzz/real_command.h>
 #include <fuzz/real_sweep.h>
 #include <fuzz/sweep_report.h>
 #include <util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <cstdio>
 
@@ -74,8 +75,7 @@ int run_fuzz_real(const FuzzRealArgs& args) {
   for (const auto& m : args.meshes) options.roots.emplace_back(m);
   if (options.roots.empty()) options.roots = fuzz::default_mesh_roots();
   if (options.roots.empty())
-    throw util::InputError("--meshes",
-                               "no mesh folder given and none of the default ones exists");
+    throw util::InputError("--meshes", "no mesh folder given and none of the default ones exists");
   options.seed = args.seed;
   options.per_mesh = args.per_mesh;
   options.count = args.count;

@@ -2,6 +2,7 @@
 // `umbra fuzz real`: the truth sweep over real meshes (fuzz/real_sweep.h,
 // docs/fuzzing.md).
 #include <CLI/CLI.hpp>
+
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -1,10 +1,11 @@
-#include <fmt/format.h>
 #include <fuzz/edge_lights.h>
 #include <fuzz/real_scenes.h>
 #include <fuzz/splitmix64.h>
 #include <fuzz/usable_camera.h>
-#include <geometry/oracle/bvh.h>
 #include <geometry/exact/predicates.h>
+#include <geometry/oracle/bvh.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>

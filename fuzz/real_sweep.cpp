@@ -1,12 +1,13 @@
-#include <fmt/format.h>
 #include <fuzz/mesh_catalog.h>
 #include <fuzz/real_scenes.h>
 #include <fuzz/real_sweep.h>
-#include <util/phase_clock.h>
 #include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
-#include <util/input_error.h>
 #include <geometry/io/mesh_io.h>
+#include <util/input_error.h>
+#include <util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <fstream>

@@ -1,6 +1,6 @@
-#include <geometry/volumes/closure_check.h>
 #include <fuzz/scene_check.h>
 #include <geometry/volumes/builder.h>
+#include <geometry/volumes/closure_check.h>
 #include <raster/validate.h>
 
 #include <chrono>

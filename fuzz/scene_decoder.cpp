@@ -73,7 +73,8 @@ Scene decode_scene(ByteReader& in, const DecodeLimits& limits) {
     for (int p = 0; p < np; ++p) {
       geometry::Polygon poly;
       const int size = in.range(3, limits.max_polygon_size);
-      for (int k = 0; k < size; ++k) poly.push_back(static_cast<std::uint32_t>(in.range(0, nv - 1)));
+      for (int k = 0; k < size; ++k)
+        poly.push_back(static_cast<std::uint32_t>(in.range(0, nv - 1)));
       model.polygons.push_back(std::move(poly));
     }
     for (const IVec& v : iv) model.vertices.push_back(scaled(v, s));
@@ -102,10 +103,18 @@ Scene decode_scene(ByteReader& in, const DecodeLimits& limits) {
     const IVec& c = iv[face[2 % face.size()]];
     IVec p{0, 8, 0};
     switch (in.range(0, 6)) {
-      case 0: p = lattice(in, 8); break;                                    // anywhere
-      case 1: p = iv[static_cast<std::size_t>(in.range(0, static_cast<int>(iv.size()) - 1))]; break;  // on a vertex
-      case 2: p = combine(a, b, c, in.range(-2, 3), 0); break;              // on an edge's line
-      case 3: p = combine(a, b, c, in.range(-2, 2), in.range(-2, 2)); break;  // in a face's plane
+      case 0:
+        p = lattice(in, 8);
+        break;  // anywhere
+      case 1:
+        p = iv[static_cast<std::size_t>(in.range(0, static_cast<int>(iv.size()) - 1))];
+        break;  // on a vertex
+      case 2:
+        p = combine(a, b, c, in.range(-2, 3), 0);
+        break;  // on an edge's line
+      case 3:
+        p = combine(a, b, c, in.range(-2, 2), in.range(-2, 2));
+        break;   // in a face's plane
       case 4: {  // directional, anywhere
         light.type = LightType::directional;
         IVec d = lattice(in, 3);
@@ -115,9 +124,9 @@ Scene decode_scene(ByteReader& in, const DecodeLimits& limits) {
       }
       default: {  // directional along an edge or within a face's plane
         light.type = LightType::directional;
-        IVec d = combine({0, 0, 0}, IVec{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-                         IVec{c[0] - a[0], c[1] - a[1], c[2] - a[2]}, in.range(-1, 1),
-                         in.range(-1, 1));
+        IVec d =
+            combine({0, 0, 0}, IVec{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                    IVec{c[0] - a[0], c[1] - a[1], c[2] - a[2]}, in.range(-1, 1), in.range(-1, 1));
         if (is_zero(d)) d = {1, -2, 1};
         light.direction = scaled(d, 1.0);
         break;
@@ -151,8 +160,8 @@ Scene decode_scene(ByteReader& in, const DecodeLimits& limits) {
   const Vec3 f = cam.look_at - cam.eye;
   if (geometry::cross(f, cam.up) == Vec3{}) cam.up = {1, 0, 0};
   const geometry::CameraFrame frame = geometry::camera_frame(cam);
-  if (!geometry::is_finite(frame.r) || !geometry::is_finite(frame.u) || !geometry::is_finite(frame.f) ||
-      frame.r == Vec3{}) {
+  if (!geometry::is_finite(frame.r) || !geometry::is_finite(frame.u) ||
+      !geometry::is_finite(frame.f) || frame.r == Vec3{}) {
     cam.eye = scaled(IVec{1, 3, 9}, s);
     cam.look_at = {0, 0, 0};
     cam.up = {0, 1, 0};

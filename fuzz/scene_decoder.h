@@ -10,8 +10,8 @@ namespace umbra::fuzz {
 
 struct DecodeLimits {
   int max_models = 2;
-  int max_vertices = 10;   ///< per model
-  int max_polygons = 6;    ///< per model
+  int max_vertices = 10;  ///< per model
+  int max_polygons = 6;   ///< per model
   int max_polygon_size = 6;
   int max_lights = 2;
   int width = 24;

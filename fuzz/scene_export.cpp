@@ -1,16 +1,17 @@
-#include <fmt/format.h>
 #include <fuzz/scene_export.h>
-#include <util/input_error.h>
-#include <geometry/sample_ray.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/oracle/shadow_oracle.h>
 #include <geometry/exact/visible_surface.h>
+#include <geometry/io/scene_json.h>
+#include <geometry/oracle/scene_index.h>
+#include <geometry/oracle/shadow_oracle.h>
+#include <geometry/sample_ray.h>
 #include <raster/image_io.h>
+#include <util/input_error.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <bit>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace umbra::fuzz {

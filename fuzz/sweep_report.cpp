@@ -1,6 +1,6 @@
-#include <fmt/format.h>
 #include <fuzz/sweep_report.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 namespace umbra::fuzz {

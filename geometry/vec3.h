@@ -27,6 +27,8 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 /// normalize(v) = v / sqrt(dot(v, v)), exactly as DESIGN.md's sample rays spell it.
 inline Vec3 normalize(const Vec3& v) { return v / std::sqrt(dot(v, v)); }
 inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace umbra::geometry

@@ -1,11 +1,12 @@
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-#include <fmt/format.h>
+#include <raster/image_io.h>
+#include <raster/shading.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
-#include <raster/image_io.h>
-#include <raster/shading.h>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
@@ -54,8 +55,9 @@ ImageKind kind_of(const fs::path& path) {
   const std::string ext = lowercase(path.extension().string());
   if (ext == ".png") return ImageKind::png;
   if (ext == ".exr") return ImageKind::exr;
-  throw util::InputError(path.string(), fmt::format("unknown image extension '{}'; use .png or .exr",
-                                              path.extension().string()));
+  throw util::InputError(
+      path.string(),
+      fmt::format("unknown image extension '{}'; use .png or .exr", path.extension().string()));
 }
 
 /// Maps a value in [0, 1] to 0..255 by rounding to nearest; out-of-range
@@ -247,7 +249,8 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
     if (index >= 0) by_light.emplace(index, c);
   }
   if (!by_light.contains(0))
-    throw util::InputError(where, "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
+    throw util::InputError(where,
+                           "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
   long expected = 0;
   for (const auto& [index, channel] : by_light) {
     if (index != expected)
@@ -256,8 +259,8 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   }
 
   if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.deep)
-    throw util::InputError(where, fmt::format("unexpected image size {}x{}x{}{}", spec.width, spec.height,
-                                        spec.depth, spec.deep ? " (deep)" : ""));
+    throw util::InputError(where, fmt::format("unexpected image size {}x{}x{}{}", spec.width,
+                                              spec.height, spec.depth, spec.deep ? " (deep)" : ""));
   // Pixel (i, j) of the file is compared with sample (i, j) of the scene's
   // camera: a data window moved off the display window (origin +5+5 or
   // -1-1) would compare every pixel with the wrong sample.
@@ -272,8 +275,9 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
                     last_pixel(spec.full_y, spec.full_height)));
   const std::uint64_t n64 = static_cast<std::uint64_t>(spec.width) * spec.height;
   if (n64 > max_pixels)
-    throw util::InputError(where, fmt::format("{}x{} pixels is more than the {} pixels a render can have",
-                                        spec.width, spec.height, max_pixels));
+    throw util::InputError(
+        where, fmt::format("{}x{} pixels is more than the {} pixels a render can have", spec.width,
+                           spec.height, max_pixels));
   const std::size_t n = static_cast<std::size_t>(n64);
   const std::size_t width = static_cast<std::size_t>(spec.width);
 
@@ -321,7 +325,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
 void write_rgb_png(const fs::path& path, int width, int height, const std::vector<float>& rgb) {
   if (kind_of(path) != ImageKind::png)
     throw util::InputError(path.string(), fmt::format("unknown image extension '{}'; use .png",
-                                                path.extension().string()));
+                                                      path.extension().string()));
   if (width <= 0 || height <= 0 || rgb.size() != static_cast<std::size_t>(width) * height * 3)
     throw std::invalid_argument(
         fmt::format("write_rgb_png: {} floats for a {}x{} image", rgb.size(), width, height));

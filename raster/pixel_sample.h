@@ -1,8 +1,8 @@
 #pragma once
 // One decided sample, whichever method decided it, and how it lands in the
 // frame: the beauty pass shaded from its classes, and every AOV.
-#include <geometry/sample_ray.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/sample_ray.h>
 #include <raster/frame.h>
 #include <raster/shading.h>
 

@@ -1,9 +1,9 @@
+#include <geometry/oracle/scene_index.h>
 #include <geometry/volumes/contour.h>
 #include <geometry/volumes/model_tables.h>
-#include <geometry/oracle/scene_index.h>
 #include <raster/methods/float_range.h>
-#include <raster/render.h>
 #include <raster/methods/render_methods.h>
+#include <raster/render.h>
 #include <raster/supersample.h>
 
 #include <stdexcept>

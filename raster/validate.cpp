@@ -1,9 +1,9 @@
 // umbra validate: every checked pixel's shadow.<i> against the oracle.
-#include <util/input_error.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <raster/frame.h>
-#include <util/parallel_for.h>
 #include <raster/validate.h>
+#include <util/input_error.h>
+#include <util/parallel_for.h>
 
 #include <cmath>
 #include <numeric>
@@ -70,14 +70,14 @@ void check_fits(const std::string& where, int width, int height, std::size_t lig
                 const ShadowChannels& image) {
   if (image.width != width || image.height != height) {
     throw util::InputError(where, "the image is " + std::to_string(image.width) + "x" +
-                                          std::to_string(image.height) +
-                                          " but the scene's camera renders " +
-                                          std::to_string(width) + "x" + std::to_string(height));
+                                      std::to_string(image.height) +
+                                      " but the scene's camera renders " + std::to_string(width) +
+                                      "x" + std::to_string(height));
   }
   if (image.shadow.size() != lights) {
     throw util::InputError(where, "the image has " + std::to_string(image.shadow.size()) +
-                                          " shadow channels but the scene has " +
-                                          std::to_string(lights) + " lights");
+                                      " shadow channels but the scene has " +
+                                      std::to_string(lights) + " lights");
   }
   const std::size_t total = static_cast<std::size_t>(width) * height;
   for (const auto& channel : image.shadow) {

@@ -1,7 +1,7 @@
 #pragma once
 // Compares a render's shadow.<i> AOVs with the exact oracle.
-#include <geometry/scene.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/scene.h>
 #include <raster/image_io.h>
 #include <util/progress.h>
 

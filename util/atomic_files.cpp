@@ -1,8 +1,9 @@
-#include <fcntl.h>
-#include <fmt/format.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
 #include <util/temporary_files.h>
+
+#include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cerrno>

@@ -1,7 +1,8 @@
-#include <fcntl.h>
-#include <fmt/format.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
+
+#include <fcntl.h>
+#include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
 

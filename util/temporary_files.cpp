@@ -1,4 +1,5 @@
 #include <util/temporary_files.h>
+
 #include <unistd.h>
 
 #include <array>

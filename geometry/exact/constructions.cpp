@@ -1,6 +1,7 @@
-#include <CGAL/Gmpq.h>
 #include <geometry/exact/constructions.h>
 #include <geometry/exact/exact_arithmetic.h>
+
+#include <CGAL/Gmpq.h>
 #include <gmp.h>
 
 #include <algorithm>

@@ -11,6 +11,8 @@
 #include <geometry/export/gltf_writer.h>
 #include <util/input_error.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -18,7 +20,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 

@@ -3,6 +3,7 @@
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
+
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>

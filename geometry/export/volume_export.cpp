@@ -16,10 +16,11 @@
 #include <util/atomic_files.h>
 #include <util/input_error.h>
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstdint>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <utility>

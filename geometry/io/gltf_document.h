@@ -8,6 +8,7 @@
 // "meshes[0].primitives[1].indices"). Internal to geometry/io: what the
 // file's nodes, meshes, lights and camera mean to umbra is gltf_scene.cpp's.
 #include <geometry/vec3.h>
+
 #include <tiny_gltf.h>
 
 #include <cstdint>

@@ -2,10 +2,11 @@
 #include <geometry/io/json_depth.h>
 #include <util/input_error.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
-#include <nlohmann/json.hpp>
 #include <system_error>
 
 namespace umbra::geometry {

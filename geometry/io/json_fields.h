@@ -4,11 +4,12 @@
 // within ±2^500, a direction that normalizes, a colour) and, on failure,
 // names the file and the field's JSON path. Unknown keys are errors, so that
 // typos never pass. Internal to geometry/io.
-#include <fmt/format.h>
 #include <geometry/exact/coordinate_range.h>
 #include <geometry/io/located_json.h>
 #include <geometry/scene.h>
 #include <util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,6 +5,7 @@
 // SAX interface builds the document as its own parser would, with the path
 // kept on the side. Internal to geometry/io.
 #include <nlohmann/json.hpp>
+
 #include <string>
 #include <string_view>
 

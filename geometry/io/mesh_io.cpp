@@ -2,9 +2,9 @@
 // extension, and the checks every format shares. The formats themselves live
 // in off_reader.cpp, obj_reader.cpp, ply_reader.cpp and stl_reader.cpp.
 #include <geometry/io/gltf_scene.h>
-#include <util/input_file.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/io/mesh_lexer.h>
+#include <util/input_file.h>
 
 #include <string>
 
@@ -33,7 +33,7 @@ PolygonSoup parse_polygon_soup(std::string_view bytes, const std::filesystem::pa
     soup = parse_gltf_polygon_soup(bytes, name);
   } else {
     throw util::InputError(where, "unknown mesh extension '" + name.extension().string() +
-                                "'; expected .off, .obj, .ply, .stl, .gltf or .glb");
+                                      "'; expected .off, .obj, .ply, .stl, .gltf or .glb");
   }
   if (soup.polygons.empty()) throw util::InputError(where, "empty mesh: the file has no polygon");
   return soup;

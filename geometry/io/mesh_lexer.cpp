@@ -94,8 +94,9 @@ Real parse_real(std::string_view token, const std::string& where, std::string_vi
     throw util::InputError(where, "malformed " + std::string(what) + " " + quoted(token));
   }
   if (ec == std::errc::result_out_of_range) {
-    throw util::InputError(where, std::string(what) + " " + quoted(token) + " is out of the range of " +
-                                (sizeof(Real) == sizeof(float) ? "a float" : "a double"));
+    throw util::InputError(where, std::string(what) + " " + quoted(token) +
+                                      " is out of the range of " +
+                                      (sizeof(Real) == sizeof(float) ? "a float" : "a double"));
   }
   return value;
 }
@@ -132,7 +133,7 @@ std::int64_t parse_integer(std::string_view token, const std::string& where, std
   }
   if (ec == std::errc::result_out_of_range || value < min || value > max) {
     throw util::InputError(where, std::string(what) + " " + quoted(token) + " is out of range [" +
-                                std::to_string(min) + ", " + std::to_string(max) + "]");
+                                      std::to_string(min) + ", " + std::to_string(max) + "]");
   }
   return value;
 }

@@ -29,7 +29,7 @@ std::uint32_t vertex_index(std::string_view reference, std::size_t vertex_count,
   if (index == 0) throw util::InputError(where, "face index 0: OBJ indices start at 1");
   if (index > count || index < -count) {
     throw util::InputError(where, "face index " + std::to_string(index) + " out of range: " +
-                                std::to_string(count) + " vertices defined so far");
+                                      std::to_string(count) + " vertices defined so far");
   }
   return static_cast<std::uint32_t>(index > 0 ? index - 1 : count + index);
 }
@@ -57,8 +57,9 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
       const std::string where = at_line(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n != 3 && n != 4 && n != 6 && n != 7) {
-        throw util::InputError(where, "vertex needs 'x y z [w]' (optionally followed by 'r g b'); got " +
-                                    std::to_string(n) + " values");
+        throw util::InputError(where,
+                               "vertex needs 'x y z [w]' (optionally followed by 'r g b'); got " +
+                                   std::to_string(n) + " values");
       }
       Vec3 p;
       tokens.next(token);
@@ -72,7 +73,7 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
         const double w = parse_double(token, where, "w coordinate");
         if (w != 1.0) {
           throw util::InputError(where, "homogeneous coordinate w = " + std::string(token) +
-                                      " is not supported (only w = 1)");
+                                            " is not supported (only w = 1)");
         }
       }
       if (soup.vertices.size() == std::numeric_limits<std::uint32_t>::max()) {
@@ -83,8 +84,8 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
       const std::string where = at_line(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n < 3) {
-        throw util::InputError(where,
-                         "face has " + std::to_string(n) + " vertices; at least 3 are needed");
+        throw util::InputError(
+            where, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
       }
       if (n > kMaxPolygonVertices) throw util::InputError(where, polygon_too_large(n));
       Polygon polygon;

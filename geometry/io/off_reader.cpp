@@ -48,7 +48,7 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   header.next(keyword);
   if (keyword != "OFF" && keyword != "COFF" && keyword != "NOFF" && keyword != "CNOFF") {
     throw util::InputError(at_line(name, lines.line_number()),
-                     "malformed OFF header: expected OFF, COFF, NOFF or CNOFF");
+                           "malformed OFF header: expected OFF, COFF, NOFF or CNOFF");
   }
   // The counts follow on the header line or on the next content line.
   Tokens counts = header;
@@ -80,8 +80,9 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
   if (nv > room / kMinVertexBytes || nf > room / kMinFaceBytes ||
       nv * kMinVertexBytes + nf * kMinFaceBytes > room) {
     throw util::InputError(counts_where, "declares " + std::to_string(nv) + " vertices and " +
-                                       std::to_string(nf) + " faces, more than the remaining " +
-                                       std::to_string(lines.remaining()) + " bytes can hold");
+                                             std::to_string(nf) +
+                                             " faces, more than the remaining " +
+                                             std::to_string(lines.remaining()) + " bytes can hold");
   }
   if (nv > std::numeric_limits<std::uint32_t>::max()) {
     throw util::InputError(counts_where, "too many vertices for 32-bit indices");
@@ -121,11 +122,13 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
     const std::size_t available = values.count_remaining();
     const auto n = parse_integer(token, where, "face vertex count", 0, kMaxCount);
     if (static_cast<std::uint64_t>(n) > available) {
-      throw util::InputError(where, "face declares " + std::to_string(n) + " vertices but the line has " +
-                                  std::to_string(available) + " more values");
+      throw util::InputError(where, "face declares " + std::to_string(n) +
+                                        " vertices but the line has " + std::to_string(available) +
+                                        " more values");
     }
     if (n < 3) {
-      throw util::InputError(where, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
+      throw util::InputError(where,
+                             "face has " + std::to_string(n) + " vertices; at least 3 are needed");
     }
     if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
       throw util::InputError(where, polygon_too_large(static_cast<std::uint64_t>(n)));
@@ -134,7 +137,8 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
     for (std::int64_t k = 0; k < n; ++k) {
       values.next(token);
       if (max_index < 0)
-        throw util::InputError(where, "face index " + std::string(token) + " but the file has no vertex");
+        throw util::InputError(where,
+                               "face index " + std::string(token) + " but the file has no vertex");
       polygon.push_back(
           static_cast<std::uint32_t>(parse_integer(token, where, "face index", 0, max_index)));
     }

@@ -123,7 +123,8 @@ Header parse_header(std::string_view bytes, const std::string& name) {
   bool have_format = false;
   while (true) {
     if (!lines.next(line)) {
-      throw util::InputError(at_line(name, lines.line_number()), "malformed PLY header: no 'end_header'");
+      throw util::InputError(at_line(name, lines.line_number()),
+                             "malformed PLY header: no 'end_header'");
     }
     const std::string where = at_line(name, lines.line_number());
     Tokens tokens(line);
@@ -135,7 +136,8 @@ Header parse_header(std::string_view bytes, const std::string& name) {
       std::string_view format;
       std::string_view version;
       if (!tokens.next(format) || !tokens.next(version) || tokens.next(token) || version != "1.0") {
-        throw util::InputError(where, "malformed PLY format line: expected 'format <encoding> 1.0'");
+        throw util::InputError(where,
+                               "malformed PLY format line: expected 'format <encoding> 1.0'");
       }
       if (format == "ascii")
         header.encoding = Encoding::ascii;
@@ -149,7 +151,8 @@ Header parse_header(std::string_view bytes, const std::string& name) {
     } else if (keyword == "element") {
       std::string_view element_name;
       if (!tokens.next(element_name) || !tokens.next(token) || tokens.count_remaining() != 0) {
-        throw util::InputError(where, "malformed PLY element line: expected 'element <name> <count>'");
+        throw util::InputError(where,
+                               "malformed PLY element line: expected 'element <name> <count>'");
       }
       Element element;
       element.name = element_name;
@@ -168,9 +171,10 @@ Header parse_header(std::string_view bytes, const std::string& name) {
         std::string_view property_name;
         if (!tokens.next(count_name) || !tokens.next(item_name) || !tokens.next(property_name) ||
             tokens.next(token)) {
-          throw util::InputError(where,
-                           "malformed PLY list property: expected 'property list <count type> "
-                           "<item type> <name>'");
+          throw util::InputError(
+              where,
+              "malformed PLY list property: expected 'property list <count type> "
+              "<item type> <name>'");
         }
         const auto count_type = scalar_named(count_name);
         const auto item_type = scalar_named(item_name);
@@ -184,7 +188,8 @@ Header parse_header(std::string_view bytes, const std::string& name) {
         if (!type)
           throw util::InputError(where, "unknown PLY scalar type '" + std::string(type_name) + "'");
         if (!tokens.next(property_name) || tokens.next(token)) {
-          throw util::InputError(where, "malformed PLY property: expected 'property <type> <name>'");
+          throw util::InputError(where,
+                                 "malformed PLY property: expected 'property <type> <name>'");
         }
         property = {std::string(property_name), false, Scalar::u8, *type};
       }
@@ -343,9 +348,9 @@ void check_counts(const Header& header, std::size_t body_size, const std::string
     const std::uint64_t room = body_size + 1;  // an ASCII body may lack its last separator
     if (element.count > room / per_item || needed + element.count * per_item > room) {
       throw util::InputError(where, "PLY element '" + element.name + "' declares " +
-                                  std::to_string(element.count) +
-                                  " items, more than the remaining " + std::to_string(body_size) +
-                                  " bytes can hold");
+                                        std::to_string(element.count) +
+                                        " items, more than the remaining " +
+                                        std::to_string(body_size) + " bytes can hold");
     }
     needed += element.count * per_item;
   }
@@ -373,15 +378,15 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
           if (n < 0) throw util::InputError(at, "negative list length in " + context);
           if (!source.has_room(static_cast<std::uint64_t>(n), property.type)) {
             throw util::InputError(at, "truncated data: list length " + std::to_string(n) + " in " +
-                                     context + " runs past the end of the file");
+                                           context + " runs past the end of the file");
           }
           if (!indices) {
             for (std::int64_t k = 0; k < n; ++k) source.real(property.type, "list value", context);
             continue;
           }
           if (n < 3) {
-            throw util::InputError(at,
-                             "face has " + std::to_string(n) + " vertices; at least 3 are needed");
+            throw util::InputError(
+                at, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
           }
           if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
             throw util::InputError(at, polygon_too_large(static_cast<std::uint64_t>(n)));
@@ -391,8 +396,9 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
             const std::int64_t index = source.integer(property.type, "face index", context);
             const std::string index_at = source.last_where();
             if (index < 0 || index > max_index) {
-              throw util::InputError(index_at, "face index " + std::to_string(index) + " out of range: " +
-                                             std::to_string(vertex_count) + " vertices");
+              throw util::InputError(
+                  index_at, "face index " + std::to_string(index) +
+                                " out of range: " + std::to_string(vertex_count) + " vertices");
             }
             polygon.push_back(static_cast<std::uint32_t>(index));
           }
@@ -401,7 +407,8 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
                    (property.name == "x" || property.name == "y" || property.name == "z")) {
           const double value = source.real(property.type, "coordinate", context);
           if (!std::isfinite(value))
-            throw util::InputError(source.last_where(), "coordinate " + property.name + " is not finite");
+            throw util::InputError(source.last_where(),
+                                   "coordinate " + property.name + " is not finite");
           (property.name == "x" ? p.x : property.name == "y" ? p.y : p.z) = value;
         } else {
           source.real(property.type, "value", context);
@@ -433,8 +440,8 @@ PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
           ++found;
         }
         if (found != 1) {
-          throw util::InputError(where,
-                           std::string("PLY element 'vertex' needs exactly one property ") + axis);
+          throw util::InputError(
+              where, std::string("PLY element 'vertex' needs exactly one property ") + axis);
         }
       }
     } else if (element.name == "face") {
@@ -444,7 +451,8 @@ PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
       for (const Property& property : element.properties) {
         if (property.name != "vertex_indices" && property.name != "vertex_index") continue;
         if (!property.is_list || !is_integer(property.type)) {
-          throw util::InputError(where, "face property " + property.name + " must be a list of integers");
+          throw util::InputError(where,
+                                 "face property " + property.name + " must be a list of integers");
         }
         ++found;
       }

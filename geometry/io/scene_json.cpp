@@ -3,7 +3,6 @@
 // The text is parsed with every error located (located_json.h); the schema
 // below then walks the document once through validating accessors
 // (json_fields.h) that name each field by its path ("lights[1].position").
-#include <fmt/format.h>
 #include <geometry/exact/coordinate_range.h>
 #include <geometry/io/gltf_scene.h>
 #include <geometry/io/json_fields.h>
@@ -14,10 +13,12 @@
 #include <util/input_error.h>
 #include <util/input_file.h>
 
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>

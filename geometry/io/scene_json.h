@@ -9,8 +9,8 @@ namespace umbra::geometry {
 
 /// Loads and validates a scene: a `.gltf` or `.glb` file (case-insensitive)
 /// as glTF 2.0 (geometry/io/gltf_scene.h), any other as the JSON format, whose
-/// mesh paths are relative to the scene file; transforms are applied (geometry/io/transform.h). Throws InputError naming
-/// the file and the JSON field ("models[2].transform.scale") or mesh line.
+/// mesh paths are relative to the scene file; transforms are applied (geometry/io/transform.h).
+/// Throws InputError naming the file and the JSON field ("models[2].transform.scale") or mesh line.
 Scene load_scene(const std::filesystem::path& file);
 
 /// Same, from text; `file` names it in messages and anchors relative paths.

@@ -49,7 +49,7 @@ PolygonSoup parse_binary(std::string_view bytes, std::uint32_t count, const std:
         *axes[axis] = static_cast<double>(read_f32_le(bytes.data() + offset));
         if (!std::isfinite(*axes[axis])) {
           throw util::InputError(at_byte(name, offset),
-                           "coordinate is not finite (triangle " + std::to_string(t) + ")");
+                                 "coordinate is not finite (triangle " + std::to_string(t) + ")");
         }
       }
       polygon.push_back(merger.add(p));
@@ -71,12 +71,12 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
   auto expect = [&](std::string_view keyword) {
     if (!cursor.next(token)) {
       throw util::InputError(at_line(name, cursor.line()),
-                       "file ends where '" + std::string(keyword) + "' was expected");
+                             "file ends where '" + std::string(keyword) + "' was expected");
     }
     if (!keyword_is(token, keyword)) {
-      throw util::InputError(at_line(name, cursor.line()), "expected '" + std::string(keyword) +
-                                                         "', found '" +
-                                                         std::string(token.substr(0, 40)) + "'");
+      throw util::InputError(at_line(name, cursor.line()),
+                             "expected '" + std::string(keyword) + "', found '" +
+                                 std::string(token.substr(0, 40)) + "'");
     }
   };
   auto number = [&](bool coordinate) {
@@ -90,7 +90,7 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
   while (cursor.next(token)) {  // one solid per turn
     if (!keyword_is(token, "solid")) {
       throw util::InputError(at_line(name, cursor.line()),
-                       "expected 'solid', found '" + std::string(token.substr(0, 40)) + "'");
+                             "expected 'solid', found '" + std::string(token.substr(0, 40)) + "'");
     }
     cursor.skip_line();  // the solid's name
     while (true) {
@@ -101,8 +101,9 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
         break;
       }
       if (!keyword_is(token, "facet")) {
-        throw util::InputError(at_line(name, cursor.line()), "expected 'facet' or 'endsolid', found '" +
-                                                           std::string(token.substr(0, 40)) + "'");
+        throw util::InputError(
+            at_line(name, cursor.line()),
+            "expected 'facet' or 'endsolid', found '" + std::string(token.substr(0, 40)) + "'");
       }
       const std::size_t facet_line = cursor.line();
       expect("normal");
@@ -128,8 +129,9 @@ PolygonSoup parse_ascii(std::string_view bytes, const std::string& name) {
           throw util::InputError(at_line(name, facet_line), polygon_too_large(polygon.size()));
       }
       if (polygon.size() < 3) {
-        throw util::InputError(at_line(name, facet_line), "facet has " + std::to_string(polygon.size()) +
-                                                        " vertices; at least 3 are needed");
+        throw util::InputError(
+            at_line(name, facet_line),
+            "facet has " + std::to_string(polygon.size()) + " vertices; at least 3 are needed");
       }
       expect("endfacet");
       soup.polygons.push_back(std::move(polygon));
@@ -154,16 +156,17 @@ PolygonSoup parse_stl(std::string_view bytes, const std::string& name) {
       return parse_binary(bytes, count, name);
     if (!starts_with_solid(bytes)) {
       throw util::InputError(at_byte(name, 80),
-                       "truncated or oversized binary STL: the header declares " +
-                           std::to_string(count) + " triangles (84 + 50·" + std::to_string(count) +
-                           " = " + std::to_string(84 + 50 * static_cast<std::uint64_t>(count)) +
-                           " bytes) but the file has " + std::to_string(bytes.size()) +
-                           " bytes, and it is not ASCII STL (no 'solid' first)");
+                             "truncated or oversized binary STL: the header declares " +
+                                 std::to_string(count) + " triangles (84 + 50·" +
+                                 std::to_string(count) + " = " +
+                                 std::to_string(84 + 50 * static_cast<std::uint64_t>(count)) +
+                                 " bytes) but the file has " + std::to_string(bytes.size()) +
+                                 " bytes, and it is not ASCII STL (no 'solid' first)");
     }
   } else if (!starts_with_solid(bytes)) {
-    throw util::InputError(name,
-                     "not an STL file: " + std::to_string(bytes.size()) +
-                         " bytes is too short for binary STL and it does not start with 'solid'");
+    throw util::InputError(
+        name, "not an STL file: " + std::to_string(bytes.size()) +
+                  " bytes is too short for binary STL and it does not start with 'solid'");
   }
   return parse_ascii(bytes, name);
 }

@@ -31,7 +31,8 @@ std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
     return index;
   }
   const Vec3 extent = centres.hi - centres.lo;
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+  const int axis =
+      extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                    [&](std::uint32_t a, std::uint32_t b) {

@@ -1,8 +1,8 @@
 #pragma once
 // The scene's polygons with their fixed surfaces and a BVH over them: what
 // the exact oracle and the renderer's exact fallback query.
-#include <geometry/oracle/bvh.h>
 #include <geometry/exact/polygon_surface.h>
+#include <geometry/oracle/bvh.h>
 #include <geometry/scene.h>
 
 #include <span>

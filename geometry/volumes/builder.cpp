@@ -1,10 +1,10 @@
-#include <geometry/volumes/contour.h>
-#include <geometry/volumes/model_edges.h>
-#include <util/parallel_for.h>
 #include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/sphere_ends.h>
 #include <geometry/volumes/builder.h>
+#include <geometry/volumes/contour.h>
 #include <geometry/volumes/far_ends.h>
+#include <geometry/volumes/model_edges.h>
+#include <geometry/volumes/sphere_ends.h>
+#include <util/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,5 +1,5 @@
-#include <geometry/volumes/contour.h>
 #include <geometry/exact/polygon_surface.h>
+#include <geometry/volumes/contour.h>
 #include <geometry/volumes/twist.h>
 
 namespace umbra::geometry {

@@ -2,12 +2,12 @@
 // The depth count of Crow's and Bergeron's algorithm at one sample, decided
 // exactly on the ideal side polygons: the renderer's answer wherever its
 // floating point cannot decide.
+#include <geometry/exact/visible_surface.h>
 #include <geometry/oracle/bvh.h>
-#include <geometry/volumes/eye_start.h>
 #include <geometry/sample_ray.h>
 #include <geometry/scene.h>
+#include <geometry/volumes/eye_start.h>
 #include <geometry/volumes/shadow_volume.h>
-#include <geometry/exact/visible_surface.h>
 
 #include <memory>
 #include <mutex>

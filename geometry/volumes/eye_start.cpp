@@ -1,7 +1,7 @@
-#include <geometry/volumes/eye_start.h>
-#include <util/parallel_for.h>
 #include <geometry/exact/segment_crossing.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/volumes/eye_start.h>
+#include <util/parallel_for.h>
 
 #include <algorithm>
 #include <map>

@@ -5,8 +5,8 @@
 // Morton order of their boxes' centres first, so a run's box is small
 // whatever order the file kept them in (scanned meshes keep none). Made
 // once per casting model by the volume builder, asked by every light.
-#include <geometry/oracle/bvh.h>
 #include <geometry/exact/polygon_surface.h>
+#include <geometry/oracle/bvh.h>
 #include <geometry/scene.h>
 
 #include <cstdint>

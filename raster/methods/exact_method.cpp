@@ -1,9 +1,9 @@
 // Method::exact: the ground truth, one oracle query per pixel and light.
 #include <geometry/oracle/shadow_oracle.h>
-#include <util/parallel_for.h>
-#include <raster/pixel_sample.h>
 #include <raster/methods/render_methods.h>
+#include <raster/pixel_sample.h>
 #include <raster/scanline/surface_table.h>
+#include <util/parallel_for.h>
 
 #include <chrono>
 

@@ -1,7 +1,8 @@
-#include <fmt/format.h>
 #include <geometry/exact/coordinate_range.h>
-#include <util/input_error.h>
 #include <raster/methods/float_range.h>
+#include <util/input_error.h>
+
+#include <fmt/format.h>
 
 namespace umbra::raster {
 

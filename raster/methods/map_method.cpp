@@ -8,15 +8,15 @@
 //   3. decide pass: each remaining (sample, light) looked up (shadow_lookup.h).
 #include <geometry/box.h>
 #include <geometry/exact/predicates.h>
+#include <raster/methods/render_methods.h>
+#include <raster/methods/shadow_lookup.h>
+#include <raster/methods/shadow_map.h>
+#include <raster/pixel_sample.h>
+#include <raster/scanline/scanline.h>
+#include <raster/scanline/surface_table.h>
 #include <raster/sphere_of_influence.h>
 #include <util/parallel_for.h>
 #include <util/phase_clock.h>
-#include <raster/pixel_sample.h>
-#include <raster/methods/render_methods.h>
-#include <raster/scanline/scanline.h>
-#include <raster/methods/shadow_lookup.h>
-#include <raster/methods/shadow_map.h>
-#include <raster/scanline/surface_table.h>
 
 #include <atomic>
 #include <bit>

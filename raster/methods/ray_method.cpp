@@ -6,16 +6,17 @@
 // (acne, leaks, misses at shared edges) is the method's error, which the
 // validator counts.
 #include <raster/methods/embree_scene.h>
+#include <raster/methods/render_methods.h>
+#include <raster/pixel_sample.h>
 #include <util/parallel_for.h>
 #include <util/phase_clock.h>
-#include <raster/pixel_sample.h>
-#include <raster/methods/render_methods.h>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
 #include <limits>
 #include <vector>
 

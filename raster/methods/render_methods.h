@@ -1,7 +1,7 @@
 #pragma once
 // The render methods behind raster::render (render.h), one file each.
-#include <geometry/volumes/model_tables.h>
 #include <geometry/oracle/scene_index.h>
+#include <geometry/volumes/model_tables.h>
 #include <raster/frame.h>
 #include <raster/render.h>
 

@@ -4,17 +4,17 @@
 // every pixel agrees with the oracle off boundaries.
 #include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
-#include <geometry/volumes/eye_start.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/crossings.h>
+#include <geometry/volumes/eye_start.h>
+#include <raster/methods/render_methods.h>
+#include <raster/pixel_sample.h>
+#include <raster/scanline/scanline.h>
+#include <raster/scanline/surface_table.h>
 #include <raster/sphere_of_influence.h>
 #include <util/parallel_for.h>
 #include <util/phase_clock.h>
-#include <raster/pixel_sample.h>
-#include <raster/methods/render_methods.h>
-#include <raster/scanline/scanline.h>
-#include <raster/scanline/surface_table.h>
 
 #include <atomic>
 #include <chrono>

@@ -2,7 +2,8 @@
 // One worker of the scanline renderer (scanline.cpp): its rows, its active
 // lists, and the passes over them, defined in raster/scanline/band_worker.cpp (the order of
 // rows and bands, the lists), raster/scanline/surface_pass.cpp (visible points),
-// raster/scanline/shadow_pass.cpp (depth counts) and raster/scanline/uncertainty_flags.cpp (uncertainty).
+// raster/scanline/shadow_pass.cpp (depth counts) and raster/scanline/uncertainty_flags.cpp
+// (uncertainty).
 #include <raster/scanline/edge_tables.h>
 
 #include <algorithm>
@@ -122,7 +123,8 @@ class BandWorker {
   }
 
   // The passes over a band, each explained where it is defined:
-  // raster/scanline/surface_pass.cpp, raster/scanline/shadow_pass.cpp, raster/scanline/uncertainty_flags.cpp.
+  // raster/scanline/surface_pass.cpp, raster/scanline/shadow_pass.cpp,
+  // raster/scanline/uncertainty_flags.cpp.
 
   /// Row j's visible points; crossings_[0, carried) were active on row j - 1.
   void scan_row(int j, std::size_t carried);
@@ -204,26 +206,26 @@ class BandWorker {
   const EdgeTables& scene_;
   ScanlineResult& result_;
   util::Progress* progress_;
-  std::uint64_t spans_ = 0;              // spans shaded by this worker
-  std::uint64_t skipped_ = 0;            // (polygon, band) pairs it found behind
-  util::HugeVector<Crossing> crossings_;       // the surfaces' active edge list, x-sorted
-  int taken_ = 0;                        // bucket rows below this are in the lists
-  int next_row_ = -1;                    // where the last chunk ended (-1: none yet)
-  std::vector<int> columns_;             // one shadow polygon's crossing columns on the row
-  util::HugeVector<Strip> strips_;             // the surfaces' strips that meet the band
-  util::HugeVector<ActiveShadow> shadows_;     // shadow polygons whose span meets the band, in order
-  util::HugeVector<std::uint32_t> live_;       // those not behind the band
-  util::HugeVector<std::uint8_t> inside_;      // per polygon: even-odd state along the row
-  util::HugeVector<std::uint32_t> slot_;       // per polygon: its place in surfaces_
-  std::vector<std::uint32_t> surfaces_;  // surfaces inside at the current span
-  std::vector<DepthEntry> order_;        // the span's depth-ordered list
-  std::vector<Vec3> ray_;                // the band's sample directions in camera space, row by row
-  std::vector<double> ray_length_;       // their lengths
-  std::vector<double> visible_error_;    // depth error bound of each pixel's visible hit
-  std::vector<std::uint8_t> flags_;      // per twisted group: its flag along the current ray
-  int band0_ = 0, band1_ = 0;            // the current band's rows [band0_, band1_)
-  double row_sy_[kBandRows] = {};        // row_screen_y of each of the band's rows
-  std::size_t row_base_ = 0;             // the current row's place in ray_ and the like
+  std::uint64_t spans_ = 0;                 // spans shaded by this worker
+  std::uint64_t skipped_ = 0;               // (polygon, band) pairs it found behind
+  util::HugeVector<Crossing> crossings_;    // the surfaces' active edge list, x-sorted
+  int taken_ = 0;                           // bucket rows below this are in the lists
+  int next_row_ = -1;                       // where the last chunk ended (-1: none yet)
+  std::vector<int> columns_;                // one shadow polygon's crossing columns on the row
+  util::HugeVector<Strip> strips_;          // the surfaces' strips that meet the band
+  util::HugeVector<ActiveShadow> shadows_;  // shadow polygons whose span meets the band, in order
+  util::HugeVector<std::uint32_t> live_;    // those not behind the band
+  util::HugeVector<std::uint8_t> inside_;   // per polygon: even-odd state along the row
+  util::HugeVector<std::uint32_t> slot_;    // per polygon: its place in surfaces_
+  std::vector<std::uint32_t> surfaces_;     // surfaces inside at the current span
+  std::vector<DepthEntry> order_;           // the span's depth-ordered list
+  std::vector<Vec3> ray_;              // the band's sample directions in camera space, row by row
+  std::vector<double> ray_length_;     // their lengths
+  std::vector<double> visible_error_;  // depth error bound of each pixel's visible hit
+  std::vector<std::uint8_t> flags_;    // per twisted group: its flag along the current ray
+  int band0_ = 0, band1_ = 0;          // the current band's rows [band0_, band1_)
+  double row_sy_[kBandRows] = {};      // row_screen_y of each of the band's rows
+  std::size_t row_base_ = 0;           // the current row's place in ray_ and the like
   // depth_bound_[k][i]: the largest bound on an exact visible depth in the
   // band's columns [i, i + 2^k) (-infinity where nothing is seen).
   std::vector<std::vector<double>> depth_bound_;

@@ -193,7 +193,7 @@ struct EdgeTables {
 /// polygon), then projects every polygon and tables every edge on up to
 /// `threads` threads.
 EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
-              std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads);
+                   std::size_t lights, std::span<const std::uint8_t> group_start, unsigned threads);
 
 /// Checks the eye planes (throws std::invalid_argument on a bad light,
 /// group or normal) and adds them to the prepared scene.

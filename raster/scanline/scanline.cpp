@@ -25,9 +25,9 @@
 // Every pixel that a floating-point decision could have got wrong is flagged
 // `uncertain` (raster/scanline/uncertainty_flags.cpp); the bounds are stated where they are used.
 #include <raster/scanline/band_scheduler.h>
-#include <util/parallel_for.h>
-#include <raster/scanline/scanline.h>
 #include <raster/scanline/band_worker.h>
+#include <raster/scanline/scanline.h>
+#include <util/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>

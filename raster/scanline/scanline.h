@@ -64,8 +64,9 @@ struct ScanlineResult {
   std::size_t lights = 0;
   /// Every element of every buffer below is written by the render.
   util::UninitializedVector<std::int32_t>
-      visible;                        ///< surface id per pixel; -1 where the ray hits nothing
-  util::UninitializedVector<double> depth;  ///< ray parameter t of the visible hit (infinity if none)
+      visible;  ///< surface id per pixel; -1 where the ray hits nothing
+  util::UninitializedVector<double>
+      depth;  ///< ray parameter t of the visible hit (infinity if none)
   /// [pixel * lights + light]: the summed nb_c values of the shadow polygons in
   /// front of the hit, plus, for every twisted group whose flag differs at
   /// the hit from its value at the eye, +1 (set there) or -1 (cleared there);

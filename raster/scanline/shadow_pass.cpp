@@ -106,7 +106,7 @@ void BandWorker::scan_shadows() {
 /// 0 and against the visible depth, must be clear of both error bounds, or
 /// the pixel is uncertain for the polygon's light.
 void BandWorker::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t polygon, int i0, int i1,
-                        int j) {
+                              int j) {
   const double z_near = scene_.camera.z_near;
   // The largest first bound over the polygon's box (DepthFloor::error,
   // infinite where none was found): a depth clear with it is clear with the

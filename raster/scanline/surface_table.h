@@ -4,8 +4,8 @@
 // (polygon_surface.h), degenerate polygons not at all. Each entry remembers
 // which polygon and fan triangle it is, so that a pixel's visible surface
 // leads back to the exact geometry and to its shading values.
-#include <geometry/oracle/scene_index.h>
 #include <geometry/exact/visible_surface.h>
+#include <geometry/oracle/scene_index.h>
 #include <raster/pixel_sample.h>
 #include <raster/scanline/scanline.h>
 

@@ -8,13 +8,13 @@
 #include <fuzz/scene_export.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/io/scene_json.h>
+#include <tests/fuzz/exact_reference.h>
+
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <map>
-
-#include <tests/fuzz/exact_reference.h>
 
 namespace umbra::fuzz {
 namespace {

@@ -4,11 +4,11 @@
 // ulps they say.
 #include <fuzz/placement_geometry.h>
 #include <fuzz/splitmix64.h>
+#include <tests/fuzz/exact_reference.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <tests/fuzz/exact_reference.h>
 
 namespace umbra::fuzz {
 namespace {

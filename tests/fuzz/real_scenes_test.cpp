@@ -9,13 +9,13 @@
 #include <geometry/exact/predicates.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/io/scene_json.h>
+#include <tests/fuzz/exact_reference.h>
+#include <tests/fuzz/test_meshes.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
-
-#include <tests/fuzz/exact_reference.h>
-#include <tests/fuzz/test_meshes.h>
 
 namespace umbra::fuzz {
 namespace {

@@ -5,13 +5,13 @@
 #include <fuzz/real_sweep.h>
 #include <fuzz/sweep_report.h>
 #include <geometry/io/scene_json.h>
-#include <gtest/gtest.h>
 #include <raster/validate.h>
-
-#include <nlohmann/json.hpp>
-#include <stdexcept>
-
 #include <tests/fuzz/test_meshes.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <stdexcept>
 
 namespace umbra::fuzz {
 namespace {

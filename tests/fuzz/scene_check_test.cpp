@@ -5,8 +5,9 @@
 // before and after any fix to the volume code.
 #include <fuzz/scene_check.h>
 #include <geometry/io/scene_json.h>
-#include <gtest/gtest.h>
 #include <raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <stdexcept>
 

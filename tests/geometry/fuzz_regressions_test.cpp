@@ -1,11 +1,12 @@
 // Findings of the fuzz harnesses (fuzz/regressions/), each as a named test
 // with its geometry inline. The raw inputs are replayed by fuzz.replay.*.
-#include <geometry/volumes/contour.h>
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/oracle/scene_index.h>
 #include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/twist.h>
 #include <geometry/volumes/builder.h>
+#include <geometry/volumes/contour.h>
+#include <geometry/volumes/twist.h>
+
 #include <gtest/gtest.h>
 
 namespace umbra::geometry {

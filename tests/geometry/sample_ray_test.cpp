@@ -6,8 +6,12 @@ namespace umbra::geometry {
 namespace {
 
 TEST(SampleRay, CentrePixelOfOddImageLooksAlongForward) {
-  Camera camera{.eye = {0, 0, 5}, .look_at = {0, 0, 0}, .up = {0, 1, 0},
-                .fov_y_deg = 90, .width = 3, .height = 3};
+  Camera camera{.eye = {0, 0, 5},
+                .look_at = {0, 0, 0},
+                .up = {0, 1, 0},
+                .fov_y_deg = 90,
+                .width = 3,
+                .height = 3};
   const CameraFrame frame = camera_frame(camera);
   const SampleRay ray = sample_ray(frame, 1, 1);
   EXPECT_EQ(ray.origin, (Vec3{0, 0, 5}));
@@ -15,8 +19,12 @@ TEST(SampleRay, CentrePixelOfOddImageLooksAlongForward) {
 }
 
 TEST(SampleRay, FollowsDesignFormulaBitForBit) {
-  Camera camera{.eye = {0, 3, 9}, .look_at = {0, 0, 0}, .up = {0, 1, 0},
-                .fov_y_deg = 40, .width = 640, .height = 480};
+  Camera camera{.eye = {0, 3, 9},
+                .look_at = {0, 0, 0},
+                .up = {0, 1, 0},
+                .fov_y_deg = 40,
+                .width = 640,
+                .height = 480};
   const CameraFrame frame = camera_frame(camera);
   // The same arithmetic written out independently, in DESIGN.md's order.
   const Vec3 f = normalize(Vec3{0, -3, -9});

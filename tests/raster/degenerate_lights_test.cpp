@@ -6,9 +6,10 @@
 // are the midpoints of edges as doubles compute them, which puts them a
 // hair off the edge in exact arithmetic, so every sample has one answer.
 #include <geometry/io/scene_json.h>
-#include <gtest/gtest.h>
 #include <raster/render.h>
 #include <raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>

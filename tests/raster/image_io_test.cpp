@@ -1,8 +1,10 @@
-#include <OpenImageIO/imageio.h>
-#include <util/input_error.h>
-#include <gtest/gtest.h>
 #include <raster/image_io.h>
 #include <raster/shading.h>
+#include <tests/support/file_size_limit.h>
+#include <util/input_error.h>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
@@ -13,8 +15,6 @@
 #include <random>
 #include <string>
 #include <vector>
-
-#include <tests/support/file_size_limit.h>
 
 namespace umbra::raster {
 namespace {

@@ -2,8 +2,9 @@
 // what was measured: ~12 bytes per light and pixel for the volume method,
 // so 2,000 lights at 1280x720 need about 23 GB.
 #include <geometry/scene.h>
-#include <gtest/gtest.h>
 #include <raster/memory_estimate.h>
+
+#include <gtest/gtest.h>
 
 namespace umbra::raster {
 namespace {

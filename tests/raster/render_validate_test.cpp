@@ -1,12 +1,13 @@
 // raster::render and raster::validate_render on scenes with known answers,
 // and the validator's ability to catch wrong pictures.
-#include <util/input_error.h>
-#include <geometry/sample_ray.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/oracle/shadow_oracle.h>
-#include <gtest/gtest.h>
+#include <geometry/sample_ray.h>
 #include <raster/render.h>
 #include <raster/validate.h>
+#include <util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 

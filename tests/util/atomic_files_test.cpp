@@ -1,18 +1,18 @@
 // write_all_or_nothing under a write that really fails (issue 17, row 4):
 // a file size limit makes write(2) fail with EFBIG, as a
-// full disk makes it fail with ENOSPC (tests/support/file_size_limit.h). Nothing may be left behind, and a
-// previous file at the target stays as it was.
+// full disk makes it fail with ENOSPC (tests/support/file_size_limit.h). Nothing may be left
+// behind, and a previous file at the target stays as it was.
+#include <tests/support/file_size_limit.h>
+#include <tests/support/work_dir.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
-
-#include <tests/support/file_size_limit.h>
-#include <tests/support/work_dir.h>
 
 namespace umbra::geometry {
 namespace {
@@ -34,7 +34,8 @@ TEST(AtomicFiles, FailedWriteLeavesThePreviousFilesAndNoTemporary) {
     ASSERT_TRUE(limit.active());
     // The first file fits, the second does not: neither may appear.
     try {
-      util::write_all_or_nothing({{dir / "b.txt", "small"}, {dir / "a.json", std::string(5000, 'x')}});
+      util::write_all_or_nothing(
+          {{dir / "b.txt", "small"}, {dir / "a.json", std::string(5000, 'x')}});
       ADD_FAILURE() << "the write claimed success";
     } catch (const util::InputError& e) {
       EXPECT_EQ(std::string(e.what()),

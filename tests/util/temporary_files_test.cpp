@@ -3,8 +3,11 @@
 // process that installs the handler, holds a registered temporary, and
 // receives the signal; the child must die of that signal (the handler
 // re-raises it) and the temporary must be gone.
-#include <fcntl.h>
+#include <tests/support/child_process.h>
+#include <tests/support/work_dir.h>
 #include <util/temporary_files.h>
+
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -12,9 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <tests/support/child_process.h>
-#include <tests/support/work_dir.h>
 
 namespace umbra::geometry {
 namespace {
@@ -69,7 +69,8 @@ TEST(TemporaryFiles, ReleasedGuardLeavesTheFileAlone) {
 TEST(TemporaryFiles, TableHoldsSixtyFourAndRefusesMore) {
   std::vector<std::unique_ptr<util::TemporaryFileGuard>> guards;
   for (int i = 0; i < 64; ++i) {
-    guards.push_back(std::make_unique<util::TemporaryFileGuard>("/tmp/umbra-t" + std::to_string(i)));
+    guards.push_back(
+        std::make_unique<util::TemporaryFileGuard>("/tmp/umbra-t" + std::to_string(i)));
     EXPECT_TRUE(guards.back()->registered()) << i;
   }
   EXPECT_FALSE(util::TemporaryFileGuard("/tmp/umbra-t64").registered());

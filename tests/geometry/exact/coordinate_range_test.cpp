@@ -5,14 +5,14 @@
 // refuses them, naming the field.
 #include <geometry/exact/coordinate_range.h>
 #include <geometry/io/gltf_scene.h>
-#include <util/input_error.h>
 #include <geometry/io/scene_json.h>
+#include <tests/geometry/io/gltf_fixture.h>
+#include <tests/support/input_error_matchers.h>
+#include <util/input_error.h>
+
 #include <gtest/gtest.h>
 
 #include <string>
-
-#include <tests/geometry/io/gltf_fixture.h>
-#include <tests/support/input_error_matchers.h>
 
 namespace umbra::geometry {
 namespace {

@@ -2,8 +2,9 @@
 // degenerate input (coplanar, collinear, points at infinity, huge and tiny
 // coordinates). The reference below computes with CGAL::Exact_rational.
 #include <geometry/exact/predicates.h>
-#include <gtest/gtest.h>
 #include <tests/support/rational_vec.h>
+
+#include <gtest/gtest.h>
 
 #include <random>
 

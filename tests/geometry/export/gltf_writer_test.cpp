@@ -2,15 +2,16 @@
 // does not share code with: assimp (Debian's libassimp: meshes, triangles,
 // positions, node metadata) and tinygltf's raw accessors (the per-vertex
 // custom attributes, which assimp 5.2 drops).
-#include <util/input_error.h>
+#include <geometry/export/volume_export.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/volumes/builder.h>
-#include <geometry/export/volume_export.h>
-#include <gtest/gtest.h>
-#include <tiny_gltf.h>
+#include <util/input_error.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -166,8 +167,9 @@ TEST(VolumeExportGltfErrors, CoordinateBeyondFloatRangeIsRefusedAndNothingIsWrit
     write_volumes(volumes, path);
     ADD_FAILURE() << "no error";
   } catch (const util::InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              path.string() + ": a vertex of face 0 does not fit a float32 glTF position; use .ply");
+    EXPECT_EQ(
+        std::string(e.what()),
+        path.string() + ": a vertex of face 0 does not fit a float32 glTF position; use .ply");
   }
   EXPECT_TRUE(fs::is_empty(dir));
   fs::remove_all(dir);

@@ -2,13 +2,15 @@
 // and coordinates bit-identical after reading the files back — through
 // umbra's exact readers, OpenMesh's PLY reader (custom properties) and the
 // JSON sidecar — and no file left behind by a failed write.
-#include <util/input_error.h>
-#include <geometry/io/mesh_io.h>
 #include <geometry/export/volume_export.h>
-#include <gtest/gtest.h>
+#include <geometry/io/mesh_io.h>
+#include <util/input_error.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -16,7 +18,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <random>
 #include <string>
@@ -232,7 +233,8 @@ TEST_F(VolumeExport, UnknownExtensionNamesThePathAndWritesNothing) {
 
 TEST_F(VolumeExport, MissingDirectoryLeavesNothing) {
   for (const std::string name : {"vol.ply", "vol.obj", "vol.off"}) {
-    EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "missing" / name), util::InputError) << name;
+    EXPECT_THROW(write_volumes(hand_built_volumes(), dir_ / "missing" / name), util::InputError)
+        << name;
   }
   EXPECT_TRUE(files_in_dir().empty());
 }

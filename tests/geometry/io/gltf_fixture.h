@@ -2,12 +2,13 @@
 // Small glTF files written by the tests themselves: a JSON document built
 // with nlohmann-json and one binary buffer, saved as .gltf (buffer embedded
 // as a base64 data URI, or in an external .bin) or as .glb.
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 

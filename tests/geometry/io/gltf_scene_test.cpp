@@ -1,12 +1,12 @@
 // glTF scenes and meshes: exact vertices, transforms, lights and camera from
 // small files the tests write themselves, and one InputError naming the file
 // and the glTF JSON path for each kind of malformed input.
-#include <tests/geometry/io/gltf_fixture.h>
-
 #include <geometry/io/gltf_scene.h>
-#include <util/input_error.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/io/scene_json.h>
+#include <tests/geometry/io/gltf_fixture.h>
+#include <util/input_error.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,8 +74,8 @@ TEST(GltfIo, TrsAndMatrixComposeParentFirstInDoubles) {
   GltfFixture g;
   const int pos = g.positions({{0.1f, 0, 0}, {1, 0, 0}, {0, 1, 0}});
   const int mesh = g.mesh(pos);
-  const int child = g.node({{"mesh", mesh},
-                            {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1}}});
+  const int child =
+      g.node({{"mesh", mesh}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1}}});
   const int parent = g.node({{"children", {child}},
                              {"translation", {0.5, 1, -3}},
                              {"rotation", {0, 0, 1, 0}},
@@ -112,22 +112,43 @@ TEST(GltfIo, EveryIndexComponentTypeAndTriangleModeGivesTheSameTriangles) {
     GltfFixture g;
     const int pos = g.positions(quad);
     const int n = g.node({{"mesh", g.mesh(pos, make_indices(g), mode)}});
-    g.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}};
+    g.doc["cameras"] = {
+        {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}};
     g.scene({n, g.node({{"camera", 0}, {"translation", {0, 0, 5}}})});
     return parse_gltf_scene(g.glb(), "q.glb").models.at(0).polygons;
   };
   const std::vector<Polygon> expected{{0, 1, 2}, {0, 2, 3}};
-  EXPECT_EQ(load([](GltfFixture& g) { return g.indices<std::uint8_t>({0, 1, 2, 0, 2, 3}, kUByte); }, 4),
+  EXPECT_EQ(load(
+                [](GltfFixture& g) {
+                  return g.indices<std::uint8_t>({0, 1, 2, 0, 2, 3}, kUByte);
+                },
+                4),
             expected);
-  EXPECT_EQ(load([](GltfFixture& g) { return g.indices<std::uint16_t>({0, 1, 2, 0, 2, 3}, kUShort); }, 4),
+  EXPECT_EQ(load(
+                [](GltfFixture& g) {
+                  return g.indices<std::uint16_t>({0, 1, 2, 0, 2, 3}, kUShort);
+                },
+                4),
             expected);
-  EXPECT_EQ(load([](GltfFixture& g) { return g.indices<std::uint32_t>({0, 1, 2, 0, 2, 3}, kUInt); }, 4),
+  EXPECT_EQ(load(
+                [](GltfFixture& g) {
+                  return g.indices<std::uint32_t>({0, 1, 2, 0, 2, 3}, kUInt);
+                },
+                4),
             expected);
   // Strip v = (0,1,3,2): triangle i = {v(i), v(i+1+i%2), v(i+2-i%2)} (spec §3.7.2.1).
-  EXPECT_EQ(load([](GltfFixture& g) { return g.indices<std::uint16_t>({0, 1, 3, 2}, kUShort); }, 5),
+  EXPECT_EQ(load(
+                [](GltfFixture& g) {
+                  return g.indices<std::uint16_t>({0, 1, 3, 2}, kUShort);
+                },
+                5),
             (std::vector<Polygon>{{0, 1, 3}, {1, 2, 3}}));
   // Fan (spec order {v(i+1), v(i+2), v0}).
-  EXPECT_EQ(load([](GltfFixture& g) { return g.indices<std::uint16_t>({0, 1, 2, 3}, kUShort); }, 6),
+  EXPECT_EQ(load(
+                [](GltfFixture& g) {
+                  return g.indices<std::uint16_t>({0, 1, 2, 3}, kUShort);
+                },
+                6),
             (std::vector<Polygon>{{1, 2, 0}, {2, 3, 0}}));
 }
 
@@ -155,10 +176,14 @@ GltfFixture lit_scene() {
       {{"type", "point"}, {"range", 20}, {"intensity", 0.5}},
       {{"type", "point"}, {"extras", {{"umbra", {{"dec_begin", 3}, {"decrease", 1}}}}}}};
   // Placed in another order than the array: the AOV order is the array's.
-  const int p2 = g.node({{"translation", {0, 8, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
-  const int p1 = g.node({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
-  // Directional: rotated 90° about x (exact quaternion scaled by √2), -Z → -Y... (0,0,-1) → (0,1,0)·-1
-  const int d0 = g.node({{"rotation", {1, 0, 0, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  const int p2 = g.node(
+      {{"translation", {0, 8, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+  const int p1 = g.node(
+      {{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  // Directional: rotated 90° about x (exact quaternion scaled by √2), -Z → -Y... (0,0,-1) →
+  // (0,1,0)·-1
+  const int d0 = g.node(
+      {{"rotation", {1, 0, 0, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   for (int n : {p2, p1, d0}) g.doc["scenes"][0]["nodes"].push_back(n);
   return g;
 }
@@ -235,15 +260,17 @@ TEST(GltfIo, JsonSceneReferencesAGlbAsAMesh) {
 TEST(GltfIoErrors, AccessorIndexOutOfRange) {
   GltfFixture g = triangle_scene();
   g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 7;
-  EXPECT_EQ(error_of(g.gltf(), "b.gltf"),
-            "b.gltf: meshes[0].primitives[0].attributes.POSITION: accessor 7 out of range: 1 accessors");
+  EXPECT_EQ(
+      error_of(g.gltf(), "b.gltf"),
+      "b.gltf: meshes[0].primitives[0].attributes.POSITION: accessor 7 out of range: 1 accessors");
 }
 
 TEST(GltfIoErrors, AccessorRunsPastItsBufferView) {
   GltfFixture g = triangle_scene();
   g.doc["accessors"][0]["count"] = 4;
   EXPECT_EQ(error_of(g.gltf(), "b.gltf"),
-            "b.gltf: accessors[0]: 4 elements from byteOffset 0 run past the end of bufferViews[0] (36 bytes)");
+            "b.gltf: accessors[0]: 4 elements from byteOffset 0 run past the end of bufferViews[0] "
+            "(36 bytes)");
 }
 
 TEST(GltfIoErrors, BufferViewPastTheEndOfItsBuffer) {
@@ -316,8 +343,8 @@ TEST(GltfIoErrors, TrianglesCountNotAMultipleOfThree) {
 
 TEST(GltfIoErrors, SpotLightUnplacedLightAndLightPlacedTwice) {
   GltfFixture g = lit_scene();
-  g.doc["extensions"]["KHR_lights_punctual"]["lights"][1] = {
-      {"type", "spot"}, {"spot", {{"outerConeAngle", 0.5}}}};
+  g.doc["extensions"]["KHR_lights_punctual"]["lights"][1] = {{"type", "spot"},
+                                                             {"spot", {{"outerConeAngle", 0.5}}}};
   EXPECT_EQ(error_of(g.gltf(), "l.gltf"),
             "l.gltf: extensions.KHR_lights_punctual.lights[1].type: spot lights are not "
             "supported (umbra's lights are point and directional; a spot's cone would change the "
@@ -383,8 +410,8 @@ TEST(GltfIoErrors, JsonSceneNamesTheModelThenTheGltfPath) {
     load_scene(dir / "s.json");
     ADD_FAILURE() << "no error";
   } catch (const util::InputError& e) {
-    EXPECT_EQ(std::string(e.what()), (dir / "s.json").string() + ": models[0].mesh: " +
-                                         (dir / "bad.gltf").string() +
+    EXPECT_EQ(std::string(e.what()), (dir / "s.json").string() +
+                                         ": models[0].mesh: " + (dir / "bad.gltf").string() +
                                          ": accessors[0]: 4 elements from byteOffset 0 run past "
                                          "the end of bufferViews[0] (36 bytes)");
   }

@@ -1,7 +1,9 @@
 // Mesh readers: exact doubles, polygons kept whole, every bad input reported
 // with its file and line (or byte), and the real files of assimp-testmodels.
-#include <util/input_error.h>
 #include <geometry/io/mesh_io.h>
+#include <tests/support/input_error_matchers.h>
+#include <util/input_error.h>
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -12,8 +14,6 @@
 #include <limits>
 #include <string>
 #include <vector>
-
-#include <tests/support/input_error_matchers.h>
 
 namespace umbra::geometry {
 namespace {

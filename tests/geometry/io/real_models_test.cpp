@@ -4,11 +4,12 @@
 // throws anything else. Every mesh that loads gets shadow volumes for a
 // light above it and a directional light; on the small ones the volumes must
 // be closed weighted cycles (geometry/volumes/closure_check.h).
+#include <geometry/io/mesh_io.h>
+#include <geometry/oracle/bvh.h>
+#include <geometry/volumes/builder.h>
 #include <geometry/volumes/closure_check.h>
 #include <util/input_error.h>
-#include <geometry/oracle/bvh.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/volumes/builder.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,8 +32,10 @@ std::vector<fs::path> mesh_files(const fs::path& root) {
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (!entry.is_regular_file()) continue;
     std::string ext = entry.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") files.push_back(entry.path());
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl")
+      files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   return files;
@@ -96,7 +99,8 @@ Counts walk(const fs::path& root, std::size_t closure_limit) {
 TEST(RealModels, AssimpTestModelsLoadOrFailCleanly) {
   const fs::path root = "/usr/share/assimp/models";
   if (!fs::is_directory(root))
-    GTEST_SKIP() << root << " is absent: install Debian's assimp-testmodels (scripts/install-deps.sh)";
+    GTEST_SKIP() << root
+                 << " is absent: install Debian's assimp-testmodels (scripts/install-deps.sh)";
   const Counts c = walk(root, 20000);
   EXPECT_GE(c.files, 40);
   EXPECT_GT(c.loaded, 20);
@@ -108,14 +112,15 @@ TEST(RealModels, AssimpTestModelsLoadOrFailCleanly) {
 TEST(RealModels, CgalDataMeshesLoadOrFailCleanly) {
   const fs::path tarball = "/usr/share/doc/libcgal-dev/data.tar.gz";
   if (!fs::is_regular_file(tarball))
-    GTEST_SKIP() << tarball << " is absent: install Debian's libcgal-demo (scripts/install-deps.sh)";
+    GTEST_SKIP() << tarball
+                 << " is absent: install Debian's libcgal-demo (scripts/install-deps.sh)";
   // Extracted into the build tree at test time, once.
   const fs::path dir = fs::path(UMBRA_TEST_WORK_DIR) / "cgal-data";
   const fs::path marker = dir / ".extracted";
   if (!fs::exists(marker)) {
     fs::create_directories(dir);
-    const std::string command = "tar -xzf '" + tarball.string() + "' -C '" + dir.string() +
-                                "' data/meshes data/points_3";
+    const std::string command =
+        "tar -xzf '" + tarball.string() + "' -C '" + dir.string() + "' data/meshes data/points_3";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     std::ofstream(marker) << "ok\n";
   }

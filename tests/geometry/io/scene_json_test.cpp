@@ -1,13 +1,13 @@
 // The JSON scene loader: a full scene with exact values, and each bad input
 // reported with the file and the field path (or line and column).
-#include <util/input_error.h>
 #include <geometry/io/scene_json.h>
+#include <tests/support/input_error_matchers.h>
+#include <util/input_error.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
-
-#include <tests/support/input_error_matchers.h>
 
 namespace umbra::geometry {
 namespace {

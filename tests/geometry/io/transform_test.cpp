@@ -1,4 +1,5 @@
 #include <geometry/io/transform.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>

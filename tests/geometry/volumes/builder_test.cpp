@@ -1,6 +1,8 @@
 // Where volumes end (spheres of influence, scene reach) and what the
 // builder's statistics count.
 #include <geometry/volumes/builder.h>
+#include <tests/support/scene_builders.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,15 +11,6 @@
 
 namespace umbra::geometry {
 namespace {
-
-Model cube_at(Vec3 c, double h) {
-  Model m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.push_back(
-        {c.x + ((k & 1) ? h : -h), c.y + ((k & 2) ? h : -h), c.z + ((k & 4) ? h : -h)});
-  m.polygons = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}};
-  return m;
-}
 
 double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
@@ -48,7 +41,7 @@ Scene two_cubes(std::optional<double> light_end) {
   l.position = {0, 0, 0};
   l.light_end = light_end;
   s.lights = {l};
-  s.models = {cube_at({2, 0, 0}, 0.5), cube_at({10, 0, 0}, 0.5)};
+  s.models = {test::cube_around({2, 0, 0}, 0.5), test::cube_around({10, 0, 0}, 0.5)};
   return s;
 }
 
@@ -206,7 +199,7 @@ TEST(VolumeBuilder, SidesLeavingTheBoundsEndPastItsFloorAndNeedNoCaps) {
   Model floor;
   floor.vertices = {{-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}};
   floor.polygons = {{0, 1, 2, 3}};
-  s.models = {floor, cube_at({0, 0.5, 0}, 0.5)};
+  s.models = {floor, test::cube_around({0, 0.5, 0}, 0.5)};
   EXPECT_THROW(build_shadow_volumes(s, {.caps = true, .far_ends = FarEnds::leaving_bounds}),
                std::invalid_argument);
   const ShadowVolumes reach = build_shadow_volumes(s, {.caps = false});

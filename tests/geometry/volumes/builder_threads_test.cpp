@@ -2,6 +2,8 @@
 // parts together in light order: the result must be the one-thread result
 // to the bit, twisted groups renumbered as one pass over the lights would.
 #include <geometry/volumes/builder.h>
+#include <tests/support/many_light_scenes.h>
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -9,8 +11,6 @@
 #include <span>
 #include <stdexcept>
 #include <tuple>
-
-#include <tests/support/many_light_scenes.h>
 
 namespace umbra::geometry {
 namespace {

@@ -6,14 +6,17 @@
 //   shadowing X (the oracle's answer), whichever start point is chosen;
 // - the eye's starting counts equal that same number at the eye.
 #include <geometry/exact/predicates.h>
-#include <geometry/volumes/eye_start.h>
+#include <geometry/export/volume_export.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/oracle/scene_index.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <geometry/volumes/builder.h>
-#include <geometry/export/volume_export.h>
+#include <geometry/volumes/eye_start.h>
 #include <geometry/volumes/far_ends.h>
+#include <tests/support/scene_builders.h>
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <bit>
 #include <cmath>
@@ -21,34 +24,21 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <random>
 #include <tuple>
 
 namespace umbra::geometry {
 namespace {
 
-Model cube(Vec3 lo, double s) {
-  Model m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.push_back(
-        {lo.x + ((k & 1) ? s : 0), lo.y + ((k & 2) ? s : 0), lo.z + ((k & 4) ? s : 0)});
-  // index = 4·z + 2·y + x; faces counter-clockwise seen from outside.
-  m.polygons = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}};
-  return m;
-}
+using test::cube;
+using test::floor_quad;
+using test::open_box;
 
 /// A cube whose top-front-right corner is raised: the top face and the two
 /// side faces meeting there are not planar (Bergeron's Fig. 11 situation).
 Model bent_cube(Vec3 lo, double s) {
   Model m = cube(lo, s);
   m.vertices[7].y += s / 2;
-  return m;
-}
-
-Model open_box(Vec3 lo, double s) {
-  Model m = cube(lo, s);
-  m.polygons.pop_back();  // no top
   return m;
 }
 
@@ -60,13 +50,6 @@ Model fins_and_oddities() {
                 {2, 1, 0},  {3, 1.5, 0},  {3, 1, 1},     {2, 1.5, 1},  // twisted quad
                 {-2, 1, 0}, {-1.5, 1, 0}, {-1, 1, 0}};                 // collinear
   m.polygons = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {5, 6, 7, 8}, {9, 10, 11}};
-  return m;
-}
-
-Model floor_quad(double half, double y) {
-  Model m;
-  m.vertices = {{-half, y, -half}, {-half, y, half}, {half, y, half}, {half, y, -half}};
-  m.polygons = {{0, 1, 2, 3}};
   return m;
 }
 

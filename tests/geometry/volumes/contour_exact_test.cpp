@@ -3,12 +3,12 @@
 // placed where decisions degenerate (on a vertex, on an edge's line, in a
 // face's plane, between vertices), at scales from 1e-6 to 1e6.
 #include <geometry/volumes/contour.h>
+#include <tests/support/rational_vec.h>
+
 #include <gtest/gtest.h>
 
 #include <map>
 #include <random>
-
-#include <tests/support/rational_vec.h>
 
 namespace umbra::geometry {
 namespace {

@@ -1,4 +1,5 @@
 #include <geometry/volumes/contour.h>
+#include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
 
@@ -8,15 +9,8 @@
 namespace umbra::geometry {
 namespace {
 
-/// The unit cube [0,1]³, faces counter-clockwise seen from outside.
-Model unit_cube() {
-  Model m;
-  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  m.polygons = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-  return m;
-}
+/// The unit cube [0,1]³.
+Model unit_cube() { return test::cube({0, 0, 0}, 1); }
 
 /// Multiset of nb_c values: {nb_c → how many edges}.
 std::map<int, int> nb_c_counts(const std::vector<ContourEdge>& edges) {
@@ -53,8 +47,7 @@ TEST(ContourEdges, CubeWithTheLightInTheTopFacePlane) {
 }
 
 TEST(ContourEdges, OpenBoxLitFromAboveHasItsRimWithWeightOne) {
-  Model box = unit_cube();
-  box.polygons.erase(box.polygons.begin() + 3);  // no top face (y = 1)
+  const Model box = test::open_box({0, 0, 0}, 1);  // no top face (y = 1)
   const auto edges = contour_edges(box, HPoint::point({0.5, 5, 0.5}));
   EXPECT_EQ(nb_c_counts(edges), (std::map<int, int>{{1, 4}}));
   const EdgeTopology t = edge_topology(box);
@@ -68,8 +61,10 @@ TEST(ContourEdges, SingleQuadHasFourBoundaryEdgesUnlessTheLightIsInItsPlane) {
   Model quad;
   quad.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
   quad.polygons = {{0, 1, 2, 3}};
-  EXPECT_EQ(nb_c_counts(contour_edges(quad, HPoint::point({0.5, 3, 0.5}))), (std::map<int, int>{{1, 4}}));
-  EXPECT_EQ(nb_c_counts(contour_edges(quad, HPoint::point({0.5, -3, 0.5}))), (std::map<int, int>{{1, 4}}));
+  EXPECT_EQ(nb_c_counts(contour_edges(quad, HPoint::point({0.5, 3, 0.5}))),
+            (std::map<int, int>{{1, 4}}));
+  EXPECT_EQ(nb_c_counts(contour_edges(quad, HPoint::point({0.5, -3, 0.5}))),
+            (std::map<int, int>{{1, 4}}));
   EXPECT_TRUE(contour_edges(quad, HPoint::point({7, 0, -2})).empty());
   // The directed edges run so that nb_c > 0: seen from above (light
   // facing? the quad runs clockwise from +y, so it is averted) the edges keep
@@ -117,7 +112,8 @@ TEST(ContourEdges, DuplicatedVerticesStillShareTheirEdges) {
     }
     soup.polygons.push_back(q);
   }
-  EXPECT_EQ(nb_c_counts(contour_edges(soup, HPoint::point({0.5, 5, 0.5}))), (std::map<int, int>{{2, 4}}));
+  EXPECT_EQ(nb_c_counts(contour_edges(soup, HPoint::point({0.5, 5, 0.5}))),
+            (std::map<int, int>{{2, 4}}));
   EXPECT_EQ(edge_topology(soup).manifold_edges, 12u);
 }
 

@@ -3,6 +3,7 @@
 // which both of the edge's rays leave, and nowhere that could come back in.
 #include <geometry/io/mesh_io.h>
 #include <geometry/volumes/far_ends.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // edge_table: distinct edges by position, in first-listed order, with every
 // polygon's use of each and its direction.
 #include <geometry/volumes/model_edges.h>
+
 #include <gtest/gtest.h>
 
 #include <tuple>

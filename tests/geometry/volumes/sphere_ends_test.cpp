@@ -3,12 +3,12 @@
 // checked against exact rational arithmetic where doubles cancel to noise.
 #include <geometry/exact/constructions.h>
 #include <geometry/volumes/sphere_ends.h>
+#include <tests/support/rational_vec.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
-
-#include <tests/support/rational_vec.h>
 
 namespace umbra::geometry {
 namespace {

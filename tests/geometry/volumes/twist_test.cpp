@@ -8,8 +8,9 @@
 //    every fan triangle by Cramer's rule, counting signed hits.
 #include <geometry/exact/predicates.h>
 #include <geometry/volumes/twist.h>
-#include <gtest/gtest.h>
 #include <tests/support/rational_vec.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>

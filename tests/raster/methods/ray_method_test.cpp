@@ -2,9 +2,10 @@
 // it comes on the data scenes, and the direction of the errors its epsilon
 // makes (docs/ray-cast.md).
 #include <geometry/io/scene_json.h>
-#include <gtest/gtest.h>
 #include <raster/render.h>
 #include <raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>

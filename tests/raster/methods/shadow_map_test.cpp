@@ -4,11 +4,13 @@
 // point light's cube shadows every direction, and that the output does not
 // depend on the thread count.
 #include <geometry/sample_ray.h>
-#include <gtest/gtest.h>
-#include <raster/render.h>
 #include <raster/methods/shadow_lookup.h>
 #include <raster/methods/shadow_map.h>
+#include <raster/render.h>
 #include <raster/validate.h>
+#include <tests/support/scene_builders.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
@@ -19,14 +21,7 @@ namespace {
 
 using geometry::Vec3;
 
-/// A closed axis-aligned box [lo, hi] as six quads.
-geometry::Model box(const Vec3& lo, const Vec3& hi) {
-  geometry::Model m;
-  for (int k = 0; k < 8; ++k)
-    m.vertices.push_back({(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z});
-  m.polygons = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  return m;
-}
+using test::box;
 
 /// An 8 x 8 floor at y = 0 with a unit box standing on it (touching the
 /// floor along its whole base: contact shadows), seen from above and aside.

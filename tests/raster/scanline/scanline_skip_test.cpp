@@ -2,13 +2,14 @@
 // every visible point round it in a band of rows is not scanned there) only
 // saves work: with it on or off, every visible id, depth, count, uncertain
 // flag (and light mask) and span is the same, on scenes with real shadow volumes.
-#include <geometry/volumes/eye_start.h>
-#include <geometry/oracle/scene_index.h>
 #include <geometry/io/scene_json.h>
+#include <geometry/oracle/scene_index.h>
 #include <geometry/volumes/builder.h>
-#include <gtest/gtest.h>
+#include <geometry/volumes/eye_start.h>
 #include <raster/scanline/scanline.h>
 #include <raster/scanline/surface_table.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>

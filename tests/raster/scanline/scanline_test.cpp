@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
 #include <raster/scanline/scanline.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,51 @@
+#pragma once
+// Models the tests build by hand, in one convention: boxes have vertex k at
+// (k&1 ? hi.x : lo.x, k&2 ? hi.y : lo.y, k&4 ? hi.z : lo.z) and six quads,
+// counter-clockwise seen from outside, in the order of BoxFace.
+#include <geometry/scene.h>
+
+#include <cstddef>
+
+namespace umbra::test {
+
+using geometry::Model;
+using geometry::Vec3;
+
+/// The faces of box(): polygon index by the axis and side it faces.
+enum BoxFace : std::size_t { kMinusZ, kPlusZ, kMinusX, kPlusX, kMinusY, kPlusY };
+
+/// The closed axis-aligned box [lo, hi].
+inline Model box(const Vec3& lo, const Vec3& hi) {
+  Model m;
+  for (int k = 0; k < 8; ++k)
+    m.vertices.push_back({(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z});
+  m.polygons = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}};
+  return m;
+}
+
+/// The cube [lo, lo + size]³.
+inline Model cube(const Vec3& lo, double size) {
+  return box(lo, {lo.x + size, lo.y + size, lo.z + size});
+}
+
+/// The cube of half-side `half` centred at `c`.
+inline Model cube_around(const Vec3& c, double half) {
+  return box({c.x - half, c.y - half, c.z - half}, {c.x + half, c.y + half, c.z + half});
+}
+
+/// cube(lo, size) without its top (the +y face): an open box.
+inline Model open_box(const Vec3& lo, double size) {
+  Model m = cube(lo, size);
+  m.polygons.erase(m.polygons.begin() + kPlusY);
+  return m;
+}
+
+/// The square [-half, half]² at height y, one quad.
+inline Model floor_quad(double half, double y) {
+  Model m;
+  m.vertices = {{-half, y, -half}, {-half, y, half}, {half, y, half}, {half, y, -half}};
+  m.polygons = {{0, 1, 2, 3}};
+  return m;
+}
+
+}  // namespace umbra::test
