@@ -10,6 +10,13 @@ target_compile_options(umbra_options INTERFACE
   -ffp-contract=off)
 target_include_directories(umbra_options INTERFACE ${PROJECT_SOURCE_DIR})
 
+# CI builds with warnings as errors (scripts/test.sh); a user's build of a
+# newer compiler should not fail on a warning it adds.
+option(UMBRA_WERROR "Treat compiler warnings as errors" OFF)
+if(UMBRA_WERROR)
+  target_compile_options(umbra_options INTERFACE -Werror)
+endif()
+
 if(UMBRA_SANITIZE)
   target_compile_options(umbra_options INTERFACE
     -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer)

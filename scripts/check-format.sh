@@ -11,7 +11,8 @@ if [ "${1:-}" = "--fix" ]; then
   "$format" -i "${files[@]}"
   exit 0
 fi
-bad=$("$format" --dry-run "${files[@]}" 2>&1 | grep -o '^[^:]*' | sort -u || true)
+bad=$("$format" --dry-run "${files[@]}" 2>&1 | grep -oE '^[^: ]+\.(h|cpp):[0-9]+:[0-9]+: warning' |
+  cut -d: -f1 | sort -u || true)
 if [ -n "$bad" ]; then
   echo "check-format: not formatted (run scripts/check-format.sh --fix):" >&2
   echo "$bad" | sed 's/^/  /' >&2

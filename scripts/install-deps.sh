@@ -9,7 +9,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libfmt-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels libassimp-dev libcgal-demo
-  clang-14 libclang-rt-14-dev
+  clang-14 libclang-rt-14-dev clang-format-14
   libembree-dev python3-matplotlib
 )
 missing=()

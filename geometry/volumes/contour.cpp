@@ -60,21 +60,21 @@ std::vector<ContourEdge> contour_edges(const Model& model, const HPoint& light) 
 }
 
 std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles) {
-  return contour_edges(edge_table(model), roles);
+  return contour_edges(model_edges(model), roles);
 }
 
-std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
+std::vector<ContourEdge> contour_edges(const ModelEdges& edges,
                                        const std::vector<PolygonRole>& roles) {
   std::vector<ContourEdge> result;
   for (std::size_t e = 0; e < edges.edges.size(); ++e) {
     int nb_c = 0;  // along the edge as first listed
     for (std::uint32_t u = edges.use_begin[e]; u < edges.use_begin[e + 1]; ++u) {
-      const EdgeTable::Use& use = edges.uses[u];
+      const ModelEdges::Use& use = edges.uses[u];
       const PolygonRole& role = roles[use.polygon];
       if (!role.twisted) nb_c -= to_int(role.facing) * use.along;
     }
     if (nb_c == 0) continue;
-    const EdgeTable::Edge& first = edges.edges[e];
+    const ModelEdges::Edge& first = edges.edges[e];
     // Directed so that the nb_c is positive.
     if (nb_c > 0)
       result.push_back({first.from, first.to, nb_c, first.polygon, first.edge});
@@ -85,10 +85,10 @@ std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
 }
 
 EdgeTopology edge_topology(const Model& model) {
-  return edge_topology(edge_table(model), model_surfaces(model));
+  return edge_topology(model_edges(model), model_surfaces(model));
 }
 
-EdgeTopology edge_topology(const EdgeTable& edges, std::span<const PolygonSurface> surfaces) {
+EdgeTopology edge_topology(const ModelEdges& edges, std::span<const PolygonSurface> surfaces) {
   EdgeTopology t;
   t.edges = edges.edges.size();
   for (std::size_t e = 0; e < edges.edges.size(); ++e) {

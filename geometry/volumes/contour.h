@@ -66,9 +66,9 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
 /// Edges of nonzero nb_c, in the order their first polygon lists them;
 /// polygons with facing 0 and twisted polygons add no nb_c.
 std::vector<ContourEdge> contour_edges(const Model& model, const std::vector<PolygonRole>& roles);
-/// The same with the model's edge table (edge_table(model)) already at hand,
+/// The same with the model's edges (model_edges(model)) already at hand,
 /// as when one model is asked about many lights.
-std::vector<ContourEdge> contour_edges(const EdgeTable& edges,
+std::vector<ContourEdge> contour_edges(const ModelEdges& edges,
                                        const std::vector<PolygonRole>& roles);
 /// contour_edges(model, polygon_roles(model, light)).
 std::vector<ContourEdge> contour_edges(const Model& model, const HPoint& light);
@@ -82,7 +82,7 @@ struct EdgeTopology {
   std::uint64_t degenerate_polygons = 0;  ///< all vertices on one line
 };
 EdgeTopology edge_topology(const Model& model);
-/// The same from the model's edge table and surfaces (model_tables.h).
-EdgeTopology edge_topology(const EdgeTable& edges, std::span<const PolygonSurface> surfaces);
+/// The same from the model's edges and surfaces (model_tables.h).
+EdgeTopology edge_topology(const ModelEdges& edges, std::span<const PolygonSurface> surfaces);
 
 }  // namespace umbra::geometry

@@ -70,7 +70,7 @@ struct Listed {
 
 }  // namespace
 
-EdgeTable edge_table(const Model& model) {
+ModelEdges model_edges(const Model& model) {
   const std::vector<std::uint32_t> id = weld(model);
   std::vector<Listed> listed;  // every edge of every polygon, in file order
   std::vector<std::uint64_t> keys;
@@ -95,7 +95,7 @@ EdgeTable edge_table(const Model& model) {
   FirstEqual first_listing(
       listed.size(), [&](std::uint32_t u) { return keys[u]; },
       [&](std::uint32_t u, std::uint32_t w) { return keys[u] == keys[w]; });
-  EdgeTable table;
+  ModelEdges table;
   table.edges.reserve(listed.size());  // at most; pages never touched cost nothing
   std::vector<std::uint32_t> edge_of(listed.size());
   for (std::uint32_t u = 0; u < listed.size(); ++u) {
@@ -115,7 +115,7 @@ EdgeTable edge_table(const Model& model) {
   std::vector<std::uint32_t> next(table.use_begin.begin(), table.use_begin.end() - 1);
   table.uses.resize(listed.size());
   for (std::uint32_t u = 0; u < listed.size(); ++u) {
-    const EdgeTable::Edge& e = table.edges[edge_of[u]];
+    const ModelEdges::Edge& e = table.edges[edge_of[u]];
     const std::int32_t along = id[listed[u].from] == id[e.from] ? 1 : -1;
     table.uses[next[edge_of[u]]++] = {listed[u].polygon, along};
   }

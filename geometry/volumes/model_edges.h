@@ -14,7 +14,7 @@
 
 namespace umbra::geometry {
 
-struct EdgeTable {
+struct ModelEdges {
   /// A distinct undirected edge as its first polygon lists it.
   struct Edge {
     std::uint32_t from = 0, to = 0;  ///< model vertex indices
@@ -39,6 +39,6 @@ struct EdgeTable {
   std::vector<Use> uses;
 };
 
-EdgeTable edge_table(const Model& model);
+ModelEdges model_edges(const Model& model);
 
 }  // namespace umbra::geometry

@@ -1,6 +1,6 @@
 #pragma once
 // What depends on a model alone, whatever the light: its polygons' surfaces
-// and its edge table. A render reports every model's edge topology from them
+// and its edges (model_edges.h). A render reports every model's edge topology from them
 // and builds every light's volume from them: made once and shared, where
 // each used to make its own (twice the hashing of every vertex and edge on
 // a shadowed frame).
@@ -14,7 +14,7 @@ namespace umbra::geometry {
 
 struct ModelTables {
   std::vector<PolygonSurface> surfaces;  ///< model_surfaces(model)
-  EdgeTable edges;                       ///< edge_table(model)
+  ModelEdges edges;                      ///< model_edges(model)
 };
 
 /// Per model of the scene, in model order, on up to `threads` threads (0:

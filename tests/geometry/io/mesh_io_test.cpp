@@ -1,5 +1,7 @@
 // Mesh readers: exact doubles, polygons kept whole, every bad input reported
 // with its file and line (or byte), and the real files of assimp-testmodels.
+// Over 500 lines: one suite per format would repeat the shared fixtures;
+// the cases are short and each names the fault it pins.
 #include <geometry/io/mesh_io.h>
 #include <tests/support/input_error_matchers.h>
 #include <util/input_error.h>

@@ -1,4 +1,4 @@
-// edge_table: distinct edges by position, in first-listed order, with every
+// model_edges: distinct edges by position, in first-listed order, with every
 // polygon's use of each and its direction.
 #include <geometry/volumes/model_edges.h>
 
@@ -12,28 +12,28 @@ namespace {
 
 using Uses = std::vector<std::tuple<std::uint32_t, std::int32_t>>;  // (polygon, along)
 
-Uses uses_of(const EdgeTable& t, std::size_t e) {
+Uses uses_of(const ModelEdges& t, std::size_t e) {
   Uses uses;
   for (std::uint32_t u = t.use_begin[e]; u < t.use_begin[e + 1]; ++u)
     uses.emplace_back(t.uses[u].polygon, t.uses[u].along);
   return uses;
 }
 
-TEST(EdgeTable, TwoTrianglesOnDuplicatedVerticesShareTheirDiagonal) {
+TEST(ModelEdges, TwoTrianglesOnDuplicatedVerticesShareTheirDiagonal) {
   // A unit square split along (0,0,0)-(1,1,0); the second triangle has
   // vertices of its own (4 = 0, 5 = 2) and a zero-length edge 6 → 7.
   Model m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},    {0, 1, 0},
                 {0, 0, 0}, {1, 1, 0}, {-0.0, 1, 0}, {0, 1, 0}};
   m.polygons = {{0, 1, 2}, {4, 5, 6, 7}};
-  const EdgeTable t = edge_table(m);
+  const ModelEdges t = model_edges(m);
   ASSERT_EQ(t.edges.size(), 5u);
   ASSERT_EQ(t.use_begin.size(), 6u);
   // First polygon's edges in its order, then the second's new ones.
   const std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> edges =
       {{0, 1, 0, 0}, {1, 2, 0, 1}, {2, 0, 0, 2}, {5, 6, 1, 1}, {7, 4, 1, 3}};
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    const EdgeTable::Edge& x = t.edges[e];
+    const ModelEdges::Edge& x = t.edges[e];
     EXPECT_EQ(std::tuple(x.from, x.to, x.polygon, x.edge), edges[e]) << "edge " << e;
   }
   // The diagonal 2 → 0 is run back as 4 → 5 by the second triangle; -0 and
@@ -44,13 +44,13 @@ TEST(EdgeTable, TwoTrianglesOnDuplicatedVerticesShareTheirDiagonal) {
   EXPECT_EQ(t.uses.size(), 6u);
 }
 
-TEST(EdgeTable, EdgeListedTwiceByOnePolygonHasTwoUses) {
+TEST(ModelEdges, EdgeListedTwiceByOnePolygonHasTwoUses) {
   // A polygon that runs out along two spikes and back: 0 → 1 → 2 → 1 → 0,
   // then 0 → 3 → 0.
   Model m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   m.polygons = {{0, 1, 2, 1, 0, 3}};
-  const EdgeTable t = edge_table(m);
+  const ModelEdges t = model_edges(m);
   ASSERT_EQ(t.edges.size(), 3u);  // 0-1, 1-2, 0-3
   for (std::size_t e = 0; e < 3; ++e) EXPECT_EQ(uses_of(t, e), (Uses{{0, 1}, {0, -1}})) << e;
   EXPECT_EQ(t.edges[2].edge, 4u);

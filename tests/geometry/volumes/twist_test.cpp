@@ -1,4 +1,5 @@
 // Bergeron's twist test and the projected facing, checked by hand on named
+// (over 500 lines: the rational references below are part of the test)
 // cases and against brute-force references in exact rational arithmetic
 // (CGAL::Exact_rational) that work differently from the implementation:
 //  - twist: for each pair of edges, an exact linear program (does a point of

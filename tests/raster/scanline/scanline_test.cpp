@@ -1,3 +1,7 @@
+// The scanline renderer (raster/scanline/scanline.h) on hand-built polygons:
+// visible surfaces, counts and uncertainty flags against exact answers.
+// Over 500 lines: each case builds its polygons inline, literal
+// coordinates being the point of a regression test.
 #include <raster/scanline/scanline.h>
 
 #include <gtest/gtest.h>

@@ -1,0 +1,37 @@
+# CTest labels (CONTRIBUTING.md): every test is `fast` or `slow`; tests
+# that run an umbra program (CMake-script tests, replays, smoke runs) are
+# also `cli`. `ctest -L fast` is the inner loop (under a minute here);
+# `slow` holds the sweeps, the chart smoke run and the determinism runs.
+set(UMBRA_NOT_CLI_TESTS_REGEX "^layout\\.")
+set(UMBRA_SLOW_TESTS_REGEX
+  "^(fuzz\\.real\\.|fuzz\\.check\\.placements|bench\\.chart_smoke|determinism\\.|regression\\.|validate\\..*\\.exact$)")
+
+# Labels every test that add_test made in the calling directory.
+function(umbra_label_directory_tests)
+  get_property(tests DIRECTORY PROPERTY TESTS)
+  foreach(t IN LISTS tests)
+    if(t MATCHES "${UMBRA_SLOW_TESTS_REGEX}")
+      set_property(TEST ${t} APPEND PROPERTY LABELS slow)
+    else()
+      set_property(TEST ${t} APPEND PROPERTY LABELS fast)
+    endif()
+    if(NOT t MATCHES "${UMBRA_NOT_CLI_TESTS_REGEX}")
+      set_property(TEST ${t} APPEND PROPERTY LABELS cli)
+    endif()
+  endforeach()
+endfunction()
+
+# A GoogleTest executable: its test cases discovered and labelled `fast`,
+# except those matching the gtest filter SLOW (e.g. "RealModels.*"), which
+# are `slow`; LABELS adds labels to all.
+function(umbra_discover_gtests target)
+  cmake_parse_arguments(G "" "SLOW" "LABELS" ${ARGN})
+  if(G_SLOW)
+    gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${G_SLOW}"
+      PROPERTIES LABELS "fast;${G_LABELS}")
+    gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${G_SLOW}"
+      PROPERTIES LABELS "slow;${G_LABELS}")
+  else()
+    gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "fast;${G_LABELS}")
+  endif()
+endfunction()

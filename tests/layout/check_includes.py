@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""What may include what (docs/architecture.md), checked on the source tree.
+
+Follows umbra's own includes transitively (`#include <folder/...>` rooted at
+the project) and fails, naming the chain, when a rule is broken:
+- util/ includes nothing of umbra's but util/;
+- geometry/ never reaches raster/, cli/, fuzz/ or bench/;
+- raster/ never reaches a CGAL or OpenMesh header (it gets plain values and
+  exact decisions from geometry/), nor cli/, fuzz/, bench/;
+- the `umbra` executable's sources (cli/) never reach fuzz/ or bench/;
+- OpenImageIO is included by raster/image_io.cpp alone, Embree by
+  raster/methods/ alone, tinygltf by geometry/io/ alone.
+Usage: check_includes.py SOURCE_DIR   (exit 0 clean, 1 with the violations)
+"""
+import pathlib
+import re
+import sys
+
+ROOT = pathlib.Path(sys.argv[1]).resolve()
+PROJECT = ("util", "geometry", "raster", "cli", "fuzz", "bench", "tests")
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
+
+
+def includes(path):
+    return INCLUDE.findall(path.read_text(encoding="utf-8", errors="replace"))
+
+
+def reach(start):
+    """Every include reachable from `start`: {include: chain of files}."""
+    seen = {}
+    stack = [(start, [str(start.relative_to(ROOT))])]
+    while stack:
+        path, chain = stack.pop()
+        for inc in includes(path):
+            if inc in seen:
+                continue
+            seen[inc] = chain + [inc]
+            if inc.split("/")[0] in PROJECT and (ROOT / inc).is_file():
+                stack.append((ROOT / inc, chain + [inc]))
+    return seen
+
+
+def sources(folder):
+    return sorted(p for p in (ROOT / folder).rglob("*") if p.suffix in (".h", ".cpp"))
+
+
+RULES = [
+    ("util", lambda inc: inc.split("/")[0] in PROJECT and not inc.startswith("util/"),
+     "util/ includes only util/"),
+    ("geometry", lambda inc: inc.split("/")[0] in ("raster", "cli", "fuzz", "bench"),
+     "geometry/ never includes raster/, cli/, fuzz/ or bench/"),
+    ("raster", lambda inc: inc.startswith(("CGAL/", "OpenMesh/")),
+     "raster/ never includes CGAL or OpenMesh"),
+    ("raster", lambda inc: inc.split("/")[0] in ("cli", "fuzz", "bench"),
+     "raster/ never includes cli/, fuzz/ or bench/"),
+    ("cli", lambda inc: inc.split("/")[0] in ("fuzz", "bench"),
+     "the umbra executable (cli/) never includes fuzz/ or bench/"),
+]
+ONLY_IN = [
+    ("OpenImageIO/", ("raster/image_io.cpp",)),
+    ("embree3/", ("raster/methods/",)),
+    ("tiny_gltf.h", ("geometry/io/",)),
+]
+
+violations = []
+for folder, bad, rule in RULES:
+    for src in sources(folder):
+        for inc, chain in reach(src).items():
+            if bad(inc):
+                violations.append(f"{rule}: {' -> '.join(chain)}")
+for folder in ("util", "geometry", "raster", "cli"):
+    for src in sources(folder):
+        rel = str(src.relative_to(ROOT))
+        for inc in includes(src):
+            for prefix, allowed in ONLY_IN:
+                if inc.startswith(prefix) and not rel.startswith(allowed):
+                    violations.append(f"{prefix} only in {', '.join(allowed)}: {rel}")
+
+for v in violations:
+    print(v)
+checked = sum(len(sources(f)) for f in ("util", "geometry", "raster", "cli"))
+print(f"check_includes: {checked} files, {len(violations)} violations")
+sys.exit(1 if violations else 0)
