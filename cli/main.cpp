@@ -4,6 +4,7 @@
 // production executable carries no fuzzing code.
 #include <CLI/CLI.hpp>
 #include <cli/exit_codes.h>
+#include <cli/merge_command.h>
 #include <cli/render_command.h>
 #include <cli/validate_command.h>
 #include <cli/verb_runner.h>
@@ -78,16 +79,23 @@ int main(int argc, char** argv) {
   CLI::App* render = add_render_command(app, render_args);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
+  MergeArgs merge_args;
+  CLI::App* merge = add_merge_command(app, merge_args);
   // Listed in --help only: main() hands `fuzz` to umbra-fuzz before parsing.
   app.add_subcommand("fuzz",
                      "Degenerate scenes and real models: check, export, sweep (umbra-fuzz)");
 
   // CLI11 reports an unknown verb as "A subcommand is required"; name it.
-  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != render->get_name() &&
-      std::string(argv[1]) != validate->get_name() && std::string(argv[1]) != volume->get_name()) {
+  const auto is_verb = [&](const std::string& name) {
+    for (const CLI::App* verb : app.get_subcommands([](CLI::App*) { return true; }))
+      if (verb->get_name() == name) return true;
+    return false;
+  };
+  if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
     fmt::print(stderr,
-               "umbra: unknown command '{}'; commands: {}, {}, {}, fuzz (see 'umbra --help')\n",
-               argv[1], render->get_name(), validate->get_name(), volume->get_name());
+               "umbra: unknown command '{}'; commands: render, validate, volume, merge, fuzz (see "
+               "'umbra --help')\n",
+               argv[1]);
     return kExitBadInput;
   }
 
@@ -100,6 +108,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return run_render(render_args);
     if (validate->parsed()) return run_validate(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
+    if (merge->parsed()) return run_merge(merge_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;
   });

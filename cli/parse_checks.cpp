@@ -1,4 +1,5 @@
 #include <cli/parse_checks.h>
+#include <util/input_error.h>
 
 #include <charconv>
 #include <cmath>
@@ -18,6 +19,16 @@ bool parse_unsigned(const std::string& text, std::uint64_t& value) {
 }
 
 }  // namespace
+
+Part parse_part(const std::string& option, const std::string& text) {
+  const std::size_t slash = text.find('/');
+  Part part;
+  if (slash == std::string::npos || !parse_unsigned(text.substr(0, slash), part.index) ||
+      !parse_unsigned(text.substr(slash + 1), part.count) || part.count == 0 ||
+      part.index >= part.count)
+    throw util::InputError(option, "'" + text + "' is not I/N with 0 <= I < N");
+  return part;
+}
 
 CLI::Validator positive_integer() {
   return CLI::Validator(

@@ -3,6 +3,9 @@
 // prints the limits of a double).
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
+#include <string>
+
 namespace umbra::cli {
 
 /// A whole number >= 1 (e.g. --samples).
@@ -23,5 +26,15 @@ CLI::Validator finite_non_negative();
 /// A non-empty path: `-o ""` names no file (and must not fall back to the
 /// default name as if -o had not been given).
 CLI::Validator non_empty_path();
+
+/// Part `index` of `count` (a shard, a tile), from "I/N".
+struct Part {
+  std::uint64_t index = 0;
+  std::uint64_t count = 1;
+};
+
+/// Parses "I/N", two whole numbers with 0 <= I < N (no signs, no spaces);
+/// throws util::InputError naming `option` otherwise.
+Part parse_part(const std::string& option, const std::string& text);
 
 }  // namespace umbra::cli

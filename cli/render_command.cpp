@@ -10,6 +10,7 @@
 #include <raster/memory_estimate.h>
 #include <raster/render.h>
 #include <util/input_error.h>
+#include <util/input_file.h>
 #include <util/phase_clock.h>
 
 #include <fmt/format.h>
@@ -42,6 +43,23 @@ void check_method_options(const RenderArgs& args) {
     throw util::InputError("--map-*", "applies to --method map only");
   if (args.ray_epsilon && args.method != "ray")
     throw util::InputError("--ray-epsilon", "applies to --method ray only");
+}
+
+/// A label of what a tile was rendered from: the bytes of every file the
+/// scene reads and every option that changes a pixel (FNV-1a, 64 bits).
+/// umbra merge refuses tiles whose labels differ.
+std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  const auto add = [&](std::string_view bytes) {
+    for (const unsigned char c : bytes) hash = (hash ^ c) * 0x100000001b3ull;
+    hash = (hash ^ 0xff) * 0x100000001b3ull;  // a separator
+  };
+  for (const fs::path& input : scene.inputs) add(util::read_input_file(input, "scene input"));
+  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}", args.method, args.spp,
+                  !args.no_shadows, args.map_resolution.value_or(-1), args.map_bias.value_or(-1),
+                  args.map_slope_bias.value_or(-1), args.map_lookup.value_or(""), args.map_dither,
+                  args.map_pcf.value_or(-1), args.ray_epsilon.value_or(-1)));
+  return fmt::format("{:016x}", hash);
 }
 
 raster::ShadowMapOptions map_options(const RenderArgs& args) {
@@ -117,6 +135,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "depth stay the pixel centre's, which validate checks)")
       ->check(CLI::IsMember({1, 9, 25}))
       ->type_name("N");
+  cmd->add_option("--tile", args.tile,
+                  "Render only tile I of N (0 <= I < N: bands of rows split evenly) into a "
+                  "partial OpenEXR; `umbra merge` assembles the N tiles into the frame, "
+                  "byte-identical to one render (docs/scale.md)")
+      ->type_name("I/N");
   cmd->add_flag("--no-shadows", args.no_shadows,
                 "Plain render without any shadow: every light reaches every sample in its "
                 "range (volume method only; the baseline shadow costs are measured against)");
@@ -137,6 +160,12 @@ int run_render(const RenderArgs& args) {
   if (args.no_shadows && args.method != "volume")
     throw util::InputError("--no-shadows", "applies to --method volume only");
   check_method_options(args);
+  std::optional<Part> tile;
+  if (!args.tile.empty()) {
+    tile = parse_part("--tile", args.tile);
+    if (lowercase_extension(output) != ".exr")
+      throw util::InputError("--tile", "writes a partial OpenEXR; name it -o NAME.exr");
+  }
   // Cheap checks first: a long render must not end in "unknown extension".
   check_output_path(output, {".png", ".exr"});
   std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
@@ -159,6 +188,17 @@ int run_render(const RenderArgs& args) {
   options.spp = args.spp;
   options.map = map_options(args);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
+  if (tile) {
+    const int bands =
+        (scene.camera.height + raster::kTileRowAlignment - 1) / raster::kTileRowAlignment;
+    if (tile->count > static_cast<std::uint64_t>(bands))
+      throw util::InputError(
+          "--tile", fmt::format("{}x{} has {} bands of {} rows; split it into at most {} tiles",
+                                scene.camera.width, scene.camera.height, bands,
+                                raster::kTileRowAlignment, bands));
+    options.rows = raster::tile_rows(scene.camera.height, static_cast<int>(tile->index),
+                                     static_cast<int>(tile->count));
+  }
   const bool exr = lowercase_extension(output) == ".exr";
   check_memory(raster::estimate_render_bytes(scene, options, exr), memory_limit(args.memory_limit),
                scene_path.string(),
@@ -173,7 +213,11 @@ int run_render(const RenderArgs& args) {
   timings.render = util::seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();
-  raster::write_frame(frame, output);
+  if (tile)
+    raster::write_frame_tile(frame, *options.rows,
+                             {tile->index, tile->count, job_label(scene, args)}, output);
+  else
+    raster::write_frame(frame, output);
   timings.write = util::seconds_since(phase);
   timings.total = util::seconds_since(start);
 
@@ -195,8 +239,13 @@ int run_render(const RenderArgs& args) {
   if (!args.quiet) {
     // With the statistics on stdout, keep stdout pure JSON.
     std::FILE* stream = stats_to_stdout ? stderr : stdout;
-    fmt::print(stream, "wrote {} ({}x{}, {:.2f} s)\n", output.string(), frame.width, frame.height,
-               timings.total);
+    if (tile)
+      fmt::print(stream, "wrote {} (tile {}/{}: rows {} to {} of {}x{}, {:.2f} s)\n",
+                 output.string(), tile->index, tile->count, options.rows->begin, options.rows->end,
+                 frame.width, frame.height, timings.total);
+    else
+      fmt::print(stream, "wrote {} ({}x{}, {:.2f} s)\n", output.string(), frame.width, frame.height,
+                 timings.total);
   }
   return kExitSuccess;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // `umbra render SCENE [-o OUT] [--method volume|map|ray|exact] [--threads N]
-//                     [--map-* ...] [--ray-epsilon E] [--stats-json FILE] [--quiet]`
+//                     [--map-* ...] [--ray-epsilon E] [--tile I/N] [--stats-json FILE]
+//                     [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <optional>
@@ -18,6 +19,7 @@ struct RenderArgs {
   bool quiet = false;
   bool no_shadows = false;  ///< the plain render (volume method only)
   int spp = 1;              ///< beauty samples per pixel: 1, 9 or 25
+  std::string tile;         ///< "I/N": only tile I of N (bands of rows), as a partial EXR
   // --method map (raster::ShadowMapOptions); unset: the library's defaults.
   std::optional<int> map_resolution;
   std::optional<double> map_bias;

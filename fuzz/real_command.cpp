@@ -12,19 +12,6 @@
 
 namespace umbra::cli {
 
-namespace {
-
-/// "I/N" with 0 <= I < N.
-std::pair<std::uint64_t, std::uint64_t> parse_shard(const std::string& text) {
-  unsigned long long i = 0, n = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%llu/%llu%c", &i, &n, &extra) != 2 || n == 0 || i >= n)
-    throw util::InputError("--shard", "'" + text + "' is not I/N with 0 <= I < N");
-  return {i, n};
-}
-
-}  // namespace
-
 CLI::App* add_fuzz_real_command(CLI::App& fuzz, FuzzRealArgs& args) {
   CLI::App* cmd = fuzz.add_subcommand(
       "real",
@@ -80,7 +67,11 @@ int run_fuzz_real(const FuzzRealArgs& args) {
   options.per_mesh = args.per_mesh;
   options.count = args.count;
   options.index = args.index;
-  if (!args.shard.empty()) std::tie(options.shard, options.shards) = parse_shard(args.shard);
+  if (!args.shard.empty()) {
+    const Part part = parse_part("--shard", args.shard);
+    options.shard = part.index;
+    options.shards = part.count;
+  }
   options.width = args.width;
   options.height = args.height;
   options.threads = args.threads;

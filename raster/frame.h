@@ -17,6 +17,25 @@ inline constexpr float kShadowOutOfRange = 0.5f;
 /// `depth` of a pixel whose ray hits nothing.
 inline constexpr float kDepthBackground = std::numeric_limits<float>::infinity();
 
+/// Rows [begin, end) of an image, the top row 0: the part of a frame a tile
+/// renders (umbra render --tile, umbra merge).
+struct RowRange {
+  int begin = 0;
+  int end = 0;
+  int size() const { return end - begin; }
+  bool contains(int row) const { return row >= begin && row < end; }
+};
+
+/// Rows that a tile starts on are multiples of this: the scanline's bands
+/// (raster/scanline/band_worker.h), so that a tile's bands are the whole
+/// frame's and its pixels the same bytes.
+inline constexpr int kTileRowAlignment = 8;
+
+/// The rows of tile `index` of `count` (0 <= index < count) of an image
+/// `height` rows high: the bands of kTileRowAlignment rows split as evenly as
+/// possible, in order; a tile may be empty when count exceeds the bands.
+RowRange tile_rows(int height, int index, int count);
+
 struct Frame {
   int width = 0;
   int height = 0;

@@ -1,3 +1,4 @@
+#include <raster/exr_layout.h>
 #include <raster/image_io.h>
 #include <raster/shading.h>
 #include <util/atomic_files.h>
@@ -13,7 +14,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -22,6 +25,11 @@ namespace umbra::raster {
 
 using util::InputError;
 namespace fs = std::filesystem;
+using exr_layout::channel_names;
+using exr_layout::content_format;
+using exr_layout::kJobAttribute;
+using exr_layout::kTileAttribute;
+using exr_layout::last_pixel;
 
 namespace {
 
@@ -31,24 +39,6 @@ std::string lowercase(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
-}
-
-/// The last pixel coordinate of a window from `origin` of `size` pixels, in
-/// 64 bits: a hostile header's origin near INT_MAX would overflow int.
-long long last_pixel(int origin, int size) { return static_cast<long long>(origin) + size - 1; }
-
-/// The image format of `bytes` by their magic numbers, for messages; only
-/// "OpenEXR" is read back.
-const char* content_format(std::string_view bytes) {
-  const auto starts = [&](std::string_view magic) {
-    return bytes.substr(0, magic.size()) == magic;
-  };
-  if (starts("\x76\x2f\x31\x01")) return "OpenEXR";
-  if (starts("\x89PNG\r\n\x1a\n")) return "a PNG image";
-  if (starts("\xff\xd8\xff")) return "a JPEG image";
-  if (starts("II*") || starts("MM\0*")) return "a TIFF image";
-  if (bytes.empty()) return "an empty file";
-  return "not an image umbra knows";
 }
 
 ImageKind kind_of(const fs::path& path) {
@@ -120,19 +110,23 @@ void write_beauty_png(const Frame& frame, const fs::path& path) {
   });
 }
 
-void write_exr(const Frame& frame, const fs::path& path) {
+/// Rows `rows` of `frame` as an EXR whose data window is those rows of the
+/// display window (the whole frame); a tile also records which tile of
+/// which render it is.
+void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
+               const TileLabel* tile = nullptr) {
   const std::size_t lights = frame.lights();
   const std::size_t channels = 3 + 2 * lights + 1;
 
-  OIIO::ImageSpec spec(frame.width, frame.height, static_cast<int>(channels),
-                       OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec spec(frame.width, rows.size(), static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
+  spec.y = rows.begin;
+  spec.full_x = 0;
+  spec.full_y = 0;
+  spec.full_width = frame.width;
+  spec.full_height = frame.height;
   // Our order; OpenEXR itself stores channels sorted by name, which is why
   // read_shadow_channels looks them up by name.
-  std::vector<std::string> names = {"R", "G", "B"};
-  for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("shadow.{}", i));
-  for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("count.{}", i));
-  names.push_back("depth");
-  spec.channelnames = names;
+  spec.channelnames = channel_names(lights);
   spec.alpha_channel = -1;
   spec.z_channel = -1;
   spec.attribute("oiio:ColorSpace", "Linear");
@@ -140,6 +134,10 @@ void write_exr(const Frame& frame, const fs::path& path) {
   // No time stamp: the same render gives the same bytes (OpenEXR writers
   // otherwise record the current time).
   spec.attribute("DateTime", "");
+  if (tile) {
+    spec.attribute(kTileAttribute, fmt::format("{}/{}", tile->index, tile->count));
+    spec.attribute(kJobAttribute, tile->job);
+  }
 
   // The channels are interleaved a block of rows at a time: the whole
   // image at once would double the frame's memory (133 MB more at 16
@@ -149,8 +147,8 @@ void write_exr(const Frame& frame, const fs::path& path) {
   const std::size_t width = static_cast<std::size_t>(frame.width);
   std::vector<float> block(static_cast<std::size_t>(kBlockRows) * width * channels);
   write_atomically(path, spec, [&](OIIO::ImageOutput& out) {
-    for (int y0 = 0; y0 < frame.height; y0 += kBlockRows) {
-      const int y1 = std::min(frame.height, y0 + kBlockRows);
+    for (int y0 = rows.begin; y0 < rows.end; y0 += kBlockRows) {
+      const int y1 = std::min(rows.end, y0 + kBlockRows);
       for (std::size_t p = static_cast<std::size_t>(y0) * width;
            p < static_cast<std::size_t>(y1) * width; ++p) {
         float* px = &block[(p - static_cast<std::size_t>(y0) * width) * channels];
@@ -210,7 +208,19 @@ void write_frame(const Frame& frame, const fs::path& path) {
   if (kind == ImageKind::png)
     write_beauty_png(frame, path);
   else
-    write_exr(frame, path);
+    write_exr(frame, path, {0, frame.height});
+}
+
+void write_frame_tile(const Frame& frame, RowRange rows, const TileLabel& tile,
+                      const fs::path& path) {
+  if (kind_of(path) != ImageKind::exr)
+    throw util::InputError(path.string(),
+                           "a tile is written as OpenEXR (its rows and AOVs); use a .exr name");
+  check_frame(frame);
+  if (rows.size() <= 0 || rows.begin < 0 || rows.end > frame.height)
+    throw std::invalid_argument(
+        fmt::format("write_frame_tile: rows {} to {} of {}", rows.begin, rows.end, frame.height));
+  write_exr(frame, path, rows, &tile);
 }
 
 ShadowChannels read_shadow_channels(const fs::path& path) {

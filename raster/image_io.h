@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,6 +18,33 @@ namespace umbra::raster {
 /// Throws util::InputError naming the path on an unknown extension or a
 /// write failure.
 void write_frame(const Frame& frame, const std::filesystem::path& path);
+
+/// Which tile of which render a tile file holds (umbra render --tile I/N):
+/// tile `index` of `count`, and `job`, a label of the scene and options that
+/// every tile of one render shares (umbra merge refuses mixed renders).
+struct TileLabel {
+  std::uint64_t index = 0;
+  std::uint64_t count = 1;
+  std::string job;
+};
+
+/// Rows `rows` of `frame` as an OpenEXR file whose data window is those rows
+/// of the display window (the whole frame), with the same channels as
+/// write_frame's EXR and the label as the attributes `umbra:tile` ("I/N")
+/// and `umbra:job`. Same atomicity and errors as write_frame; `rows` must be
+/// non-empty and within the frame.
+void write_frame_tile(const Frame& frame, RowRange rows, const TileLabel& tile,
+                      const std::filesystem::path& path);
+
+/// The whole frame from its tiles (umbra merge), read back exactly: every
+/// tile of one render (one job, one count, each index once), each covering
+/// tile_rows(height, index, count) of one display window with the channels
+/// of write_frame's EXR. Any other file, a missing or repeated tile, or a
+/// frame whose buffers would exceed `max_bytes` is refused with an
+/// util::InputError naming the file and what does not fit, before the
+/// frame is allocated. Written by write_frame, the result is byte-identical
+/// to the EXR (or PNG) of the single render.
+Frame merge_frame_tiles(std::span<const std::filesystem::path> parts, std::uint64_t max_bytes);
 
 /// The largest image read back: a render is at most 16384 x 16384 pixels.
 inline constexpr std::uint64_t kMaxImagePixels = 16384ull * 16384ull;

@@ -28,6 +28,7 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
     fine.camera.height *= s;
     RenderOptions centre = options;
     centre.spp = 1;
+    if (options.rows) centre.rows = RowRange{s * options.rows->begin, s * options.rows->end};
     return downsample(render(fine, centre, stats), s);
   }
   // Before any work: a scene the float methods cannot represent is bad
@@ -47,7 +48,13 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
     s.degenerate_polygons += t.degenerate_polygons;
   }
   const geometry::SceneIndex index(scene);
-  s.pixels = static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height;
+  if (options.rows && (options.rows->begin < 0 || options.rows->end > scene.camera.height ||
+                       options.rows->size() < 0))
+    throw std::invalid_argument("render: rows " + std::to_string(options.rows->begin) + " to " +
+                                std::to_string(options.rows->end) + " outside the image's " +
+                                std::to_string(scene.camera.height));
+  s.pixels = static_cast<std::uint64_t>(scene.camera.width) *
+             (options.rows ? options.rows->size() : scene.camera.height);
   if (!options.shadows && options.method != Method::volume)
     throw std::invalid_argument("render: shadows can only be turned off for Method::volume");
   switch (options.method) {

@@ -4,6 +4,9 @@
 #include <raster/frame.h>
 #include <util/progress.h>
 
+#include <cstdint>
+#include <optional>
+
 namespace umbra::raster {
 
 /// volume: shadow volumes through the scanline depth count, exact at every
@@ -59,6 +62,10 @@ struct RenderOptions {
   /// Told the phase and fraction done while rendering, from any thread, at
   /// most ten times a second (util/progress.h); empty: nobody listens.
   util::ProgressCallback progress{};
+  /// Only these rows of the image (a tile, umbra render --tile); the other
+  /// rows of the frame stay background. Every pixel rendered is the same as
+  /// in the whole frame's render. Empty optional: every row.
+  std::optional<RowRange> rows{};
   ShadowMapOptions map{};  ///< Method::map only
   RayOptions ray{};        ///< Method::ray only
 };

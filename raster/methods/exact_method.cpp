@@ -13,13 +13,14 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
                    RenderStats& stats) {
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
   Frame frame(camera.width, camera.height, lights, options.threads);
   const auto start = std::chrono::steady_clock::now();
   util::Progress progress(options.progress);
-  progress.phase("exact", static_cast<std::uint64_t>(camera.height));
+  progress.phase("exact", static_cast<std::uint64_t>(rows.size()));
 
-  util::parallel_for(camera.height, options.threads, [&](int j) {
+  for_each_row(rows, options.threads, [&](int j) {
     PixelSample sample(lights);
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
@@ -41,7 +42,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
 
   stats.seconds_decide =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats.exact_fallback_pixels = static_cast<std::uint64_t>(camera.width) * camera.height;
+  stats.exact_fallback_pixels = static_cast<std::uint64_t>(camera.width) * rows.size();
   return frame;
 }
 

@@ -92,6 +92,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   check_options(mo);
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
   const std::size_t pixels = static_cast<std::size_t>(camera.width) * camera.height;
   util::Progress progress(options.progress);
@@ -100,9 +101,9 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   auto start = util::Clock::now();
   const SurfaceTable table = surface_table(index);
   const SphereTable spheres(table.polygons, scene.lights);
-  progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
+  progress.phase("scanline", static_cast<std::uint64_t>(rows.size()));
   const ScanlineResult scan =
-      scanline_render(camera, table.polygons, 0, options.threads, {}, &progress);
+      scanline_render(camera, table.polygons, 0, options.threads, {}, &progress, true, {}, rows);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
   stats.seconds_raster_prepare = scan.seconds_prepare;
@@ -115,8 +116,8 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   std::vector<std::atomic<std::uint32_t>> needed(lights);
   std::atomic<std::uint64_t> fallbacks{0};
   Frame frame(camera.width, camera.height, lights, options.threads);
-  progress.phase("visible", static_cast<std::uint64_t>(camera.height));
-  util::parallel_for(camera.height, options.threads, [&](int j) {
+  progress.phase("visible", static_cast<std::uint64_t>(rows.size()));
+  for_each_row(rows, options.threads, [&](int j) {
     std::vector<std::uint32_t> row_needed(lights, 0);
     std::uint64_t row_fallbacks = 0;
     for (int i = 0; i < camera.width; ++i) {
@@ -203,8 +204,8 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   // 3. Each sample against the views it reads.
   start = util::Clock::now();
   std::atomic<std::uint64_t> lookups{0};
-  progress.phase("shading", static_cast<std::uint64_t>(camera.height));
-  util::parallel_for(camera.height, options.threads, [&](int j) {
+  progress.phase("shading", static_cast<std::uint64_t>(rows.size()));
+  for_each_row(rows, options.threads, [&](int j) {
     PixelSample sample(lights);
     std::uint64_t row_lookups = 0;
     for (int i = 0; i < camera.width; ++i) {

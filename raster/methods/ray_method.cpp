@@ -125,6 +125,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
                  RenderStats& stats) {
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
   util::Progress progress(options.progress);
 
@@ -141,8 +142,8 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
   stats.ray_offset = offset;
   const auto width = static_cast<std::size_t>(camera.width);
   std::atomic<std::uint64_t> shadow_rays{0};
-  progress.phase("rays", static_cast<std::uint64_t>(camera.height));
-  util::parallel_for(camera.height, options.threads, [&](int j) {
+  progress.phase("rays", static_cast<std::uint64_t>(rows.size()));
+  for_each_row(rows, options.threads, [&](int j) {
     // Primary rays of a row are coherent; Embree's stream API packs them.
     std::vector<RTCRayHit> primary(width);
     primary_rays(camera, j, primary);
@@ -215,7 +216,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
     }
     progress.advance();
   });
-  stats.primary_rays = static_cast<std::uint64_t>(camera.width) * camera.height;
+  stats.primary_rays = static_cast<std::uint64_t>(camera.width) * rows.size();
   stats.shadow_rays = shadow_rays;
   stats.seconds_decide = util::seconds_since(start);
   return frame;

@@ -4,10 +4,25 @@
 #include <geometry/volumes/model_tables.h>
 #include <raster/frame.h>
 #include <raster/render.h>
+#include <util/parallel_for.h>
 
+#include <cstddef>
 #include <span>
 
 namespace umbra::raster {
+
+/// The rows `options` asks for (a tile), or every row of the image.
+inline RowRange rows_to_render(const RenderOptions& options, int height) {
+  return options.rows ? *options.rows : RowRange{0, height};
+}
+
+/// Calls row(j) for every row j of `rows`, one row at a time from up to
+/// `threads` threads (util::parallel_for).
+template <class Row>
+void for_each_row(RowRange rows, unsigned threads, Row&& row) {
+  util::parallel_for(static_cast<std::size_t>(rows.size()), threads,
+                     [&](std::size_t k) { row(rows.begin + static_cast<int>(k)); });
+}
 
 /// The oracle's own answer at every pixel: exact first hit, exact class.
 /// count.<i> is 1 where shadowed, 0 elsewhere.

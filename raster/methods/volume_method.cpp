@@ -100,6 +100,7 @@ Frame render_volume(const geometry::SceneIndex& index,
                     RenderStats& stats) {
   const geometry::Scene& scene = index.scene();
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
 
   util::Progress progress(options.progress);
@@ -138,9 +139,9 @@ Frame render_volume(const geometry::SceneIndex& index,
   const SphereTable spheres(table.polygons, scene.lights);
   append_shadow_polygons(volumes, eye, table.polygons);
   const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye);
-  progress.phase("scanline", static_cast<std::uint64_t>(camera.height));
+  progress.phase("scanline", static_cast<std::uint64_t>(rows.size()));
   const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads,
-                                              eye.in_shadow, &progress, true, planes);
+                                              eye.in_shadow, &progress, true, planes, rows);
   stats.seconds_raster = util::seconds_since(start);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
@@ -169,8 +170,8 @@ Frame render_volume(const geometry::SceneIndex& index,
       sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
     }
   };
-  progress.phase("shading", static_cast<std::uint64_t>(camera.height));
-  util::parallel_for(camera.height, options.threads, [&](int j) {
+  progress.phase("shading", static_cast<std::uint64_t>(rows.size()));
+  for_each_row(rows, options.threads, [&](int j) {
     PixelSample sample(lights);
     std::uint64_t row_fallbacks = 0, row_recounts = 0;
     for (int i = 0; i < camera.width; ++i) {

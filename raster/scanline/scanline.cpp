@@ -40,7 +40,7 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start,
                                util::Progress* progress, bool skip_hidden_shadows,
-                               std::span<const EyePlane> eye_planes) {
+                               std::span<const EyePlane> eye_planes, std::optional<RowRange> rows) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
@@ -74,10 +74,16 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   // goes on down its own run of bands, carrying its active lists from one
   // band to the next, so it restarts them from the y buckets (one pass over
   // the edges started above, read out of order) about once, not per band.
-  const int workers =
-      static_cast<int>(std::min<unsigned>(threads, static_cast<unsigned>(frame.height)));
+  const RowRange range = rows ? *rows : RowRange{0, frame.height};
+  if (range.begin < 0 || range.end > frame.height || range.size() < 0)
+    throw std::invalid_argument("scanline_render: rows " + std::to_string(range.begin) + " to " +
+                                std::to_string(range.end) + " of " + std::to_string(frame.height));
   constexpr int kBand = detail::BandWorker::kBandRows;
-  const int bands = (frame.height + kBand - 1) / kBand;
+  static_assert(kBand == kTileRowAlignment, "tiles must start on the scanline's bands");
+  const int first_band = range.begin / kBand;
+  const int bands = range.size() == 0 ? 0 : (range.end + kBand - 1) / kBand - first_band;
+  const int workers = static_cast<int>(
+      std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max(bands, 1)))));
   // Each row is computed from the shared read-only scene alone, and bands
   // start at multiples of kBandRows whatever the thread count, so neither
   // the schedule nor which worker takes a band can change any value:
@@ -91,8 +97,10 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   BandScheduler schedule(bands, workers);
   util::parallel_for(workers, static_cast<unsigned>(workers), [&](int w) {
     detail::BandWorker band(scene, result, progress);
-    for (int b = schedule.next(w); b >= 0; b = schedule.next(w))
-      band.run(b * kBand, std::min(frame.height, (b + 1) * kBand));
+    for (int b = schedule.next(w); b >= 0; b = schedule.next(w)) {
+      const int band_start = (first_band + b) * kBand;
+      band.run(std::max(range.begin, band_start), std::min(range.end, band_start + kBand));
+    }
     spans[static_cast<std::size_t>(w)] = band.spans();
     skipped[static_cast<std::size_t>(w)] = band.shadow_bands_skipped();
   });

@@ -5,10 +5,12 @@
 // again exactly (its visible point and every light, or only the lights whose
 // shadow polygons were too close to call); every other answer is final.
 #include <geometry/sample_ray.h>
+#include <raster/frame.h>
 #include <util/progress.h>
 #include <util/uninitialized.h>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -96,10 +98,14 @@ struct ScanlineResult {
 /// `skip_hidden_shadows` = false scans every shadow polygon on every row: the
 /// same result, slower (tests compare the two).
 /// `eye_planes`: the shadow polygons through the eye, as planes (EyePlane).
+/// `rows`: only these rows are rendered (a tile); the buffers of the others
+/// hold no values. A row's values do not depend on which other rows are
+/// rendered when the range starts on a band (frame.h, kTileRowAlignment).
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start = {},
                                util::Progress* progress = nullptr, bool skip_hidden_shadows = true,
-                               std::span<const EyePlane> eye_planes = {});
+                               std::span<const EyePlane> eye_planes = {},
+                               std::optional<RowRange> rows = {});
 
 }  // namespace umbra::raster
