@@ -31,7 +31,9 @@ TEST(TileRows, BandAlignedEvenAndCoveringEveryRowOnce) {
         }
       }
       EXPECT_EQ(next, height);
-      if (largest > 0) EXPECT_LE(largest - smallest, kTileRowAlignment);
+      if (largest > 0) {
+        EXPECT_LE(largest - smallest, kTileRowAlignment);
+      }
     }
   }
   EXPECT_THROW(tile_rows(10, 2, 2), std::invalid_argument);
