@@ -11,7 +11,7 @@ namespace umbra::cli {
 /// A whole number >= 1 (e.g. --samples).
 CLI::Validator positive_integer();
 
-/// A whole number from 0 (all hardware threads) to 4096.
+/// A whole number from 0 (the CPUs the process may use) to 4096.
 CLI::Validator thread_count();
 
 /// A whole number from 0 to 2^64 - 1 (seeds): no sign, no wrap-around

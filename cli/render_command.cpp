@@ -121,7 +121,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "(ray only; default 1e-5)")
       ->check(finite_non_negative())
       ->type_name("E");
-  cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
+  cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())
       ->type_name("N");
   cmd->add_option("--stats-json", args.stats_json,

@@ -13,7 +13,7 @@ struct RenderArgs {
   std::string scene;
   std::string output;             ///< empty: <scene stem>.png in the current directory
   std::string method = "volume";  ///< volume, map, ray or exact (checked by the parser)
-  unsigned threads = 0;           ///< 0: all hardware threads
+  unsigned threads = 0;           ///< 0: the CPUs the process may use (util::usable_cpus)
   std::string stats_json;         ///< empty: none; "-": stdout
   std::string memory_limit;       ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;

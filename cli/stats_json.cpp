@@ -1,5 +1,6 @@
 #include <cli/output_files.h>
 #include <cli/stats_json.h>
+#include <util/cpu_budget.h>
 
 #include <cstdio>
 
@@ -11,7 +12,8 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["scene"] = run.scene;
   j["output"] = run.output;
   j["method"] = run.method;
-  j["threads"] = run.threads;  // as asked; 0 means all hardware threads
+  j["threads"] = run.threads;  // as asked; 0 means the CPUs the process may use
+  j["threads_used"] = util::resolve_threads(run.threads);
   j["width"] = run.width;
   j["height"] = run.height;
   j["lights"] = run.lights;

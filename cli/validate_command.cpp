@@ -86,7 +86,7 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
                   "dark grey agree, yellow boundary, red mismatch, black not checked")
       ->check(non_empty_path())
       ->type_name("MASK.png");
-  cmd->add_option("--threads", args.threads, "Worker threads (0 = all hardware threads)")
+  cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())
       ->type_name("N");
   add_memory_limit_option(cmd, args.memory_limit);

@@ -50,9 +50,10 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
                   "Write counts per light and timings as JSON to FILE ('-' = stdout)")
       ->check(non_empty_path())
       ->type_name("FILE");
-  cmd->add_option("--threads", args.threads,
-                  "Worker threads, one light at a time each (0 = all hardware threads); the "
-                  "output does not depend on it")
+  cmd->add_option(
+         "--threads", args.threads,
+         "Worker threads, one light at a time each (0 = the CPUs the process may use); the "
+         "output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
   add_memory_limit_option(cmd, args.memory_limit);

@@ -12,7 +12,7 @@ struct VolumeArgs {
   std::string stats_json;    ///< empty: none; "-": stdout
   std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
-  unsigned threads = 0;  ///< lights built in parallel; 0 = all hardware threads
+  unsigned threads = 0;  ///< lights built in parallel; 0 = the CPUs the process may use
 };
 
 /// Adds the `volume` subcommand to `app`, parsing into `args`.

@@ -78,7 +78,8 @@ FuzzCommands add_fuzz_commands(CLI::App& fuzz, FuzzArgs& args, FuzzRealArgs& rea
   CLI::App* check = fuzz.add_subcommand(
       "check", "Generate scenes; check closed volumes and render == oracle on every pixel");
   add_common(check, args);
-  check->add_option("--threads", args.threads, "Render/validate threads (0: all)");
+  check->add_option("--threads", args.threads,
+                    "Render/validate threads (0: the CPUs the process may use)");
   check->footer(
       "Example:\n  umbra fuzz check --count 200 --seed 7\n"
       "Exit 0 when every scene passes, 1 when any fails or is refused (its recipe is printed).");

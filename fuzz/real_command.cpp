@@ -36,7 +36,8 @@ CLI::App* add_fuzz_real_command(CLI::App& fuzz, FuzzRealArgs& args) {
       ->type_name("I/N");
   cmd->add_option("--width", args.width, "Image width")->check(CLI::Range(1, 4096));
   cmd->add_option("--height", args.height, "Image height")->check(CLI::Range(1, 4096));
-  cmd->add_option("--threads", args.threads, "Render/validate threads (0: all)")
+  cmd->add_option("--threads", args.threads,
+                  "Render/validate threads (0: the CPUs the process may use)")
       ->check(thread_count());
   cmd->add_flag(
       "--closure", args.closure,

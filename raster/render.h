@@ -51,7 +51,7 @@ struct RayOptions {
 
 struct RenderOptions {
   Method method = Method::volume;
-  unsigned threads = 0;  ///< 0: all hardware threads
+  unsigned threads = 0;  ///< 0: the CPUs the process may use (util::usable_cpus)
   /// false: no shadows at all, every light reaches every sample in its range
   /// (Method::volume only): the plain render that shadow costs are measured
   /// against. The shadow.<i> AOVs then say lit / out of range only.

@@ -16,6 +16,8 @@
 // scanline's own BandScheduler stays: it hands each worker consecutive
 // bands so that its active edge lists carry on, which no generic
 // partitioner knows.
+#include <util/cpu_budget.h>
+
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
@@ -23,14 +25,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <thread>
 
 namespace umbra::util {
-
-/// 0 means every hardware thread.
-inline unsigned resolve_threads(unsigned threads) {
-  return threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-}
 
 /// Calls work(begin, end) for the blocks [k·block, min(count, (k+1)·block))
 /// of [0, count), one block at a time from up to `threads` threads. The first exception
