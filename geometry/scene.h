@@ -55,6 +55,8 @@ struct Model {
   Rgb specular{0, 0, 0};
   double shininess = 32;
   bool casts_shadows = true;
+  /// Whether `umbra footprint` partitions its polygons by default.
+  bool receives = true;
 };
 
 struct Scene {

@@ -185,9 +185,9 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
                  std::vector<std::filesystem::path>& inputs) {
   const std::string path = item("models", index);
   in.expect_object(v, path);
-  in.check_keys(
-      v, path,
-      {"name", "mesh", "polygons", "color", "specular", "shininess", "casts_shadows", "transform"});
+  in.check_keys(v, path,
+                {"name", "mesh", "polygons", "color", "specular", "shininess", "casts_shadows",
+                 "receives", "transform"});
   Model model;
   model.name = v.contains("name") ? in.string(v["name"], child(path, "name"))
                                   : "model" + std::to_string(index);
@@ -200,6 +200,7 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
   }
   if (v.contains("casts_shadows"))
     model.casts_shadows = in.boolean(v["casts_shadows"], child(path, "casts_shadows"));
+  if (v.contains("receives")) model.receives = in.boolean(v["receives"], child(path, "receives"));
   Transform transform;
   if (v.contains("transform"))
     transform = read_transform(in, v["transform"], child(path, "transform"));

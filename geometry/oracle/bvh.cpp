@@ -73,7 +73,37 @@ bool meets(const Box& box, const Vec3& from, const Vec3& dir, double s_max, doub
   return true;
 }
 
+bool overlaps(const Box& a, const Box& b, double slack) {
+  for (int k = 0; k < 3; ++k) {
+    const double scale =
+        std::max({std::abs(a.lo[k]), std::abs(a.hi[k]), std::abs(b.lo[k]), std::abs(b.hi[k])});
+    const double pad = slack + 1e-9 * scale;
+    if (a.lo[k] > b.hi[k] + pad || b.lo[k] > a.hi[k] + pad) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+void Bvh::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {
+  if (nodes_.empty()) return;
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!overlaps(node.box, box, slack)) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        if (overlaps(boxes_[order_[i]], box, slack)) out.push_back(order_[i]);
+      }
+    } else {
+      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
+      stack[top++] = self + 1;
+      stack[top++] = node.first;
+    }
+  }
+}
 
 void Bvh::query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
                         std::vector<std::uint32_t>& out) const {

@@ -21,6 +21,10 @@ class Bvh {
   void query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
                      std::vector<std::uint32_t>& out) const;
 
+  /// Items whose box may meet `box`, widened by `slack` (and by 1e-9 of the
+  /// coordinates' size). Appends to `out`.
+  void query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const;
+
   std::size_t size() const { return boxes_.size(); }
 
  private:

@@ -1,0 +1,300 @@
+#include <geometry/exact/polygon_surface.h>
+#include <geometry/footprint/footprint.h>
+#include <geometry/footprint/light_query.h>
+#include <geometry/footprint/receiver_partition.h>
+#include <geometry/footprint/receiver_plane.h>
+#include <geometry/oracle/shadow_oracle.h>
+#include <geometry/volumes/builder.h>
+#include <geometry/volumes/contour.h>
+#include <util/parallel_for.h>
+#include <util/phase_clock.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace umbra::geometry {
+
+namespace {
+
+using namespace detail;
+
+/// One light's side polygons as the edges they come from, with boxes that
+/// hold each side's part inside the scene (its vertices reach past it).
+struct LightSides {
+  std::vector<std::array<Vec3, 2>> edges;
+  Bvh bvh;
+};
+
+LightSides light_sides(const Scene& scene, const ShadowVolumes& volumes, std::uint32_t light) {
+  LightSides sides;
+  std::vector<Box> boxes;
+  for (const ShadowPolygon& p : volumes.polygons) {
+    if (p.light != light || p.type != ShadowPolygonType::side) continue;
+    const Model& model = scene.models[p.model];
+    const Polygon& poly = model.polygons[p.polygon];
+    const std::uint32_t n = static_cast<std::uint32_t>(poly.size());
+    // A twisted polygon's own volume also has sides on its fan diagonals
+    // (v0, v_k), k = edge - n + 2 (ShadowPolygon::edge).
+    const std::uint32_t from = p.edge < n ? poly[p.edge] : poly[0];
+    const std::uint32_t to = p.edge < n ? poly[(p.edge + 1) % n] : poly[p.edge - n + 2];
+    sides.edges.push_back({model.vertices[from], model.vertices[to]});
+    Box box;
+    for (const Vec3& v : p.vertices) box.extend(v);
+    boxes.push_back(box);
+  }
+  sides.bvh = Bvh(std::move(boxes));
+  return sides;
+}
+
+/// The pieces of one receiving polygon for one light: the polygon itself
+/// when planar, else each fan triangle.
+struct Unit {
+  std::int32_t triangle = -1;
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> fan;
+};
+
+std::vector<Unit> units_of(const Model& model, const Polygon& polygon,
+                           const PolygonSurface& surface) {
+  std::vector<Unit> units;
+  if (surface.shape == PolygonShape::degenerate) return units;
+  if (surface.shape == PolygonShape::planar) {
+    Unit u;
+    for (std::uint32_t v : polygon) u.vertices.push_back(model.vertices[v]);
+    for (const FanTriangle& t : surface.triangles) u.fan.push_back(t.local);
+    units.push_back(std::move(u));
+    return units;
+  }
+  for (const FanTriangle& t : surface.triangles) {
+    Unit u;
+    u.triangle = static_cast<std::int32_t>(t.local[1]) - 1;
+    for (std::uint32_t l : t.local) u.vertices.push_back(model.vertices[polygon[l]]);
+    u.fan.push_back({0, 1, 2});
+    units.push_back(std::move(u));
+  }
+  return units;
+}
+
+/// The receiver's plane, oriented so that its front is the polygon's: the
+/// first fan triangle's plane, turned over when the polygon's outline runs
+/// clockwise in it.
+ReceiverPlane plane_of(const Unit& u) {
+  const auto& t = u.fan.front();
+  ReceiverPlane plane(u.vertices[t[0]], u.vertices[t[1]], u.vertices[t[2]]);
+  FT twice;
+  const std::size_t n = u.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point2 a = plane.project(u.vertices[i]), b = plane.project(u.vertices[(i + 1) % n]);
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  if (CGAL::is_negative(twice)) return {u.vertices[t[0]], u.vertices[t[2]], u.vertices[t[1]]};
+  return plane;
+}
+
+struct PolygonResult {
+  std::vector<FootprintRegion> regions;
+  ReceiverSummary summary;
+  std::uint64_t units = 0, segments = 0, faces = 0;
+};
+
+struct Context {
+  const Scene& scene;
+  const SceneIndex& index;
+  const std::vector<LightSides>& sides;
+  const std::vector<std::vector<PolygonSurface>>& surfaces;
+};
+
+PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_t model_index,
+                           std::uint32_t polygon_index) {
+  const Model& model = ctx.scene.models[model_index];
+  const Polygon& polygon = model.polygons[polygon_index];
+  const HPoint lp = light_point(ctx.scene.lights[light]);
+  PolygonResult result;
+  result.summary = {light, model_index, polygon_index};
+  FT lit_total, shadowed_total, front_lit;  // 3D areas are these times sqrt(scale²): per unit
+  double area = 0, lit_area = 0, shadowed_area = 0, front_lit_area = 0;
+  std::optional<std::int32_t> common_facing;
+  std::vector<std::uint32_t> candidates, scratch;
+  for (const Unit& unit : units_of(model, polygon, ctx.surfaces[model_index][polygon_index])) {
+    ++result.units;
+    const ReceiverPlane plane = plane_of(unit);
+    // +1: the light on the side the receiver's normal points to, its front.
+    const std::int32_t facing = static_cast<std::int32_t>(plane.side(lp));
+    if (!common_facing)
+      common_facing = facing;
+    else if (*common_facing != facing)
+      common_facing = 0;
+
+    ReceiverOutline outline;
+    Box box3;
+    for (const Vec3& v : unit.vertices) {
+      outline.vertices.push_back(plane.project(v));
+      box3.extend(v);
+    }
+    outline.fan = unit.fan;
+    Box2 box2{outline.vertices[0].x(), outline.vertices[0].x(), outline.vertices[0].y(),
+              outline.vertices[0].y()};
+    for (const Point2& p : outline.vertices) {
+      box2.u_lo = CGAL::min(box2.u_lo, p.x());
+      box2.u_hi = CGAL::max(box2.u_hi, p.x());
+      box2.v_lo = CGAL::min(box2.v_lo, p.y());
+      box2.v_hi = CGAL::max(box2.v_hi, p.y());
+    }
+
+    std::vector<Segment2> segments;
+    Classifier classify;
+    if (facing == 0) {
+      // The light in the receiver's plane: whole, and no light arrives.
+      classify = [](const Point2&) { return std::optional<bool>(true); };
+    } else {
+      candidates.clear();
+      ctx.sides[light].bvh.query_box(box3, 0.0, candidates);
+      for (std::uint32_t s : candidates) {
+        const auto& e = ctx.sides[light].edges[s];
+        add_side_segment(plane, box2, e[0], e[1], lp, segments);
+      }
+      candidates.clear();
+      ctx.index.bvh().query_box(box3, 0.0, candidates);
+      for (std::uint32_t id : candidates) {
+        const IndexedPolygon& caster = ctx.index.polygons()[id];
+        if (!caster.casts_shadows) continue;
+        for (const FanTriangle& t : caster.surface.triangles)
+          add_piercing_segment(plane, ctx.index.vertex(caster, t.local[0]),
+                               ctx.index.vertex(caster, t.local[1]),
+                               ctx.index.vertex(caster, t.local[2]), segments);
+      }
+      classify = [&](const Point2& p) {
+        return shadowed_from_light(ctx.index, plane.lift(p), lp, scratch);
+      };
+    }
+    result.segments += segments.size();
+    PartitionCounts counts;
+    std::vector<PartitionRegion> parts = partition_receiver(outline, segments, classify, counts);
+    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
+      return a.cls < b.cls;  // shadowed first
+    });
+    result.faces += counts.classified_faces;
+
+    const FT scale2 = plane.area_scale_squared();
+    FT unit_lit, unit_shadowed;
+    for (const PartitionRegion& part : parts) {
+      FootprintRegion r;
+      r.light = light;
+      r.model = model_index;
+      r.polygon = polygon_index;
+      r.triangle = unit.triangle;
+      r.cls = part.cls;
+      r.facing = facing;
+      for (const Point2& p : part.ring) {
+        const Point3 q = plane.lift(p);
+        r.vertices.push_back({nearest_double(q.x()), nearest_double(q.y()), nearest_double(q.z())});
+      }
+      r.area = nearest_sqrt(part.area * part.area * scale2);
+      (part.cls == FootprintClass::lit ? unit_lit : unit_shadowed) += part.area;
+      result.regions.push_back(std::move(r));
+    }
+    const double ul = nearest_sqrt(unit_lit * unit_lit * scale2);
+    const double us = nearest_sqrt(unit_shadowed * unit_shadowed * scale2);
+    area += nearest_sqrt((unit_lit + unit_shadowed) * (unit_lit + unit_shadowed) * scale2);
+    lit_area += ul;
+    shadowed_area += us;
+    if (facing > 0) front_lit_area += ul;
+    lit_total += unit_lit;
+    shadowed_total += unit_shadowed;
+    if (facing > 0) front_lit += unit_lit;
+  }
+  result.summary.area = area;
+  result.summary.lit_area = lit_area;
+  result.summary.shadowed_area = shadowed_area;
+  result.summary.facing = common_facing.value_or(0);
+  if (result.units == 1) {
+    // One plane: the fraction is a ratio of exact 2D areas.
+    const FT total = lit_total + shadowed_total;
+    result.summary.sunlit_fraction = CGAL::is_zero(total) ? 0.0 : nearest_double(front_lit / total);
+  } else {
+    result.summary.sunlit_fraction = area > 0 ? front_lit_area / area : 0.0;
+  }
+  return result;
+}
+
+std::vector<std::uint32_t> receiving_models(const Scene& scene, const FootprintOptions& options) {
+  std::vector<std::uint32_t> out;
+  if (options.receivers.empty()) {
+    for (std::uint32_t m = 0; m < scene.models.size(); ++m)
+      if (scene.models[m].receives) out.push_back(m);
+    if (out.empty())
+      throw std::invalid_argument("footprint: no model receives (every model has receives: false)");
+    return out;
+  }
+  for (const std::string& name : options.receivers) {
+    bool found = false;
+    for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
+      if (scene.models[m].name != name) continue;
+      found = true;
+      if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+    }
+    if (!found) throw std::invalid_argument(fmt::format("--receivers: no model named '{}'", name));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+Footprints compute_footprints(const Scene& scene, const FootprintOptions& options) {
+  if (scene.lights.empty()) throw std::invalid_argument("footprint: the scene has no lights");
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    if (scene.lights[i].light_end)
+      throw std::invalid_argument(fmt::format(
+          "footprint: light {} has light_end, whose sphere cuts receivers along circles, not "
+          "polygons; footprints need unlimited point or directional lights",
+          i));
+  }
+  const std::vector<std::uint32_t> models = receiving_models(scene, options);
+
+  Footprints out;
+  auto start = util::Clock::now();
+  VolumeOptions vo;
+  vo.caps = false;
+  vo.threads = options.threads;
+  const ShadowVolumes volumes = build_shadow_volumes(scene, vo);
+  std::vector<LightSides> sides;
+  for (std::uint32_t l = 0; l < scene.lights.size(); ++l)
+    sides.push_back(light_sides(scene, volumes, l));
+  const SceneIndex index(scene);
+  std::vector<std::vector<PolygonSurface>> surfaces(scene.models.size());
+  for (std::uint32_t m : models) surfaces[m] = model_surfaces(scene.models[m]);
+  out.stats.seconds_volumes = util::seconds_since(start);
+
+  start = util::Clock::now();
+  struct Item {
+    std::uint32_t light, model, polygon;
+  };
+  std::vector<Item> items;
+  for (std::uint32_t l = 0; l < scene.lights.size(); ++l)
+    for (std::uint32_t m : models)
+      for (std::uint32_t p = 0; p < scene.models[m].polygons.size(); ++p)
+        items.push_back({l, m, p});
+  std::vector<PolygonResult> results(items.size());
+  const Context ctx{scene, index, sides, surfaces};
+  util::parallel_for(items.size(), options.threads, [&](std::size_t i) {
+    results[i] = footprint_of(ctx, items[i].light, items[i].model, items[i].polygon);
+  });
+  for (PolygonResult& r : results) {
+    out.stats.receivers += r.units;
+    out.stats.boundary_segments += r.segments;
+    out.stats.classified_faces += r.faces;
+    for (FootprintRegion& region : r.regions) {
+      out.stats.vertices += region.vertices.size();
+      out.regions.push_back(std::move(region));
+    }
+    out.receivers.push_back(r.summary);
+  }
+  out.stats.regions = out.regions.size();
+  out.stats.seconds_partition = util::seconds_since(start);
+  return out;
+}
+
+}  // namespace umbra::geometry

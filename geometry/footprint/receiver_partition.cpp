@@ -1,0 +1,275 @@
+#include <geometry/footprint/receiver_partition.h>
+
+#include <CGAL/Arr_extended_dcel.h>
+#include <CGAL/Arr_observer.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+
+#include <stdexcept>
+
+namespace umbra::geometry::detail {
+
+namespace {
+
+using Traits = CGAL::Arr_segment_traits_2<Epeck>;
+using Dcel = CGAL::Arr_face_extended_dcel<Traits, int>;
+using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
+using Curve = Traits::Curve_2;
+using Face = Arrangement::Face_handle;
+using Halfedge = Arrangement::Halfedge_handle;
+
+// Face labels.
+constexpr int kUnknown = -1, kOutside = 0, kLit = 1, kShadowed = 2;
+
+/// Faces split by a cut inherit the label of the face they came from.
+class LabelKeeper : public CGAL::Arr_observer<Arrangement> {
+ public:
+  explicit LabelKeeper(Arrangement& arr) : CGAL::Arr_observer<Arrangement>(arr) {}
+  void after_split_face(Face f, Face new_f, bool /*is_hole*/) override {
+    new_f->set_data(f->data());
+  }
+};
+
+/// Every halfedge bounding f: its outer boundary and its holes' (the face
+/// lies to the left of each).
+std::vector<Halfedge> boundary_of(Face f) {
+  std::vector<Halfedge> out;
+  if (!f->is_unbounded()) {
+    auto c = f->outer_ccb();
+    const auto first = c;
+    do out.push_back(c);
+    while (++c != first);
+  }
+  for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
+    auto c = *h;
+    const auto first = c;
+    do out.push_back(c);
+    while (++c != first);
+  }
+  return out;
+}
+
+FT cross2(const FT& ax, const FT& ay, const FT& bx, const FT& by) { return ax * by - ay * bx; }
+
+/// A point strictly inside the bounded face f, different for each attempt:
+/// from a point M inside one of its outer halfedges, a step along the
+/// inward normal half-way to the nearest boundary that normal meets.
+Point2 interior_point(const std::vector<Halfedge>& boundary, std::size_t outer_size,
+                      unsigned attempt) {
+  static constexpr int kFractions[][2] = {{1, 2}, {1, 3}, {2, 3}, {2, 5}, {3, 7}, {5, 8}, {3, 11}};
+  constexpr unsigned kCount = sizeof kFractions / sizeof kFractions[0];
+  const Halfedge h = boundary[(attempt * 7) % outer_size];
+  const auto* frac = kFractions[attempt % kCount];
+  const Point2& s = h->source()->point();
+  const Point2& t = h->target()->point();
+  const FT lambda = FT(frac[0]) / FT(frac[1]);
+  const FT mx = s.x() + lambda * (t.x() - s.x()), my = s.y() + lambda * (t.y() - s.y());
+  const FT nx = -(t.y() - s.y()), ny = t.x() - s.x();  // to the left: into the face
+  std::optional<FT> nearest;
+  for (const Halfedge& e : boundary) {
+    if (e == h) continue;
+    const Point2& a = e->source()->point();
+    const Point2& b = e->target()->point();
+    const FT ex = b.x() - a.x(), ey = b.y() - a.y();
+    const FT ax = a.x() - mx, ay = a.y() - my;
+    const FT denom = cross2(nx, ny, ex, ey);
+    if (CGAL::is_zero(denom)) {
+      if (!CGAL::is_zero(cross2(ax, ay, nx, ny))) continue;  // parallel, off the ray
+      for (const Point2& p : {a, b}) {                       // on the ray's line: its nearer end
+        const FT r = ((p.x() - mx) * nx + (p.y() - my) * ny) / (nx * nx + ny * ny);
+        if (CGAL::is_positive(r) && (!nearest || r < *nearest)) nearest = r;
+      }
+      continue;
+    }
+    const FT r = cross2(ax, ay, ex, ey) / denom;
+    const FT u = cross2(ax, ay, nx, ny) / denom;
+    if (CGAL::is_positive(r) && !CGAL::is_negative(u) && u <= FT(1) && (!nearest || r < *nearest))
+      nearest = r;
+  }
+  if (!nearest) throw std::logic_error("partition_receiver: a bounded face with no boundary ahead");
+  const FT step = *nearest / FT(1 + attempt % 3);  // 1/2, 1/3, 1/4 of the way
+  return {mx + step / 2 * nx, my + step / 2 * ny};
+}
+
+/// Odd number of fan triangles strictly containing p (p is on none of
+/// their edges: they are all in the arrangement).
+bool in_surface(const ReceiverOutline& outline, const Point2& p) {
+  bool odd = false;
+  for (const auto& t : outline.fan) {
+    const Point2& a = outline.vertices[t[0]];
+    const Point2& b = outline.vertices[t[1]];
+    const Point2& c = outline.vertices[t[2]];
+    const CGAL::Orientation o = CGAL::orientation(a, b, c);
+    if (o == CGAL::COLLINEAR) continue;
+    if (CGAL::orientation(a, b, p) == o && CGAL::orientation(b, c, p) == o &&
+        CGAL::orientation(c, a, p) == o)
+      odd = !odd;
+  }
+  return odd;
+}
+
+void label_faces(Arrangement& arr, const ReceiverOutline& outline, const Classifier& classify,
+                 PartitionCounts& counts) {
+  constexpr unsigned kAttempts = 64;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (f->is_unbounded()) {
+      f->set_data(kOutside);
+      continue;
+    }
+    const std::vector<Halfedge> boundary = boundary_of(f);
+    // boundary_of lists the outer boundary first.
+    std::size_t outer_size = 0;
+    auto c = f->outer_ccb();
+    const auto first = c;
+    do ++outer_size;
+    while (++c != first);
+    int label = kUnknown;
+    for (unsigned attempt = 0; attempt < kAttempts && label == kUnknown; ++attempt) {
+      const Point2 p = interior_point(boundary, outer_size, attempt);
+      if (!in_surface(outline, p)) {
+        label = kOutside;
+        break;
+      }
+      const std::optional<bool> shadowed = classify(p);
+      if (shadowed) label = *shadowed ? kShadowed : kLit;
+    }
+    if (label == kUnknown)
+      throw std::logic_error("partition_receiver: no point of a face could be classified");
+    if (label != kOutside) ++counts.classified_faces;
+    f->set_data(label);
+  }
+}
+
+/// Removes every edge with the same label on both sides, then every vertex
+/// where the boundary runs straight on.
+void merge_alike(Arrangement& arr) {
+  std::vector<Halfedge> alike;
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e)
+    if (e->face()->data() == e->twin()->face()->data()) alike.push_back(e);
+  for (const Halfedge& e : alike) arr.remove_edge(e);
+  std::vector<Arrangement::Vertex_handle> straight;
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
+    if (v->degree() != 2) continue;
+    auto c = v->incident_halfedges();
+    const Point2& p = c->source()->point();
+    const Point2& q = (++c)->source()->point();
+    if (CGAL::collinear(p, v->point(), q)) straight.push_back(v);
+  }
+  for (const auto& v : straight) {
+    auto c = v->incident_halfedges();
+    const Halfedge e1 = c;
+    const Halfedge e2 = ++c;
+    arr.merge_edge(e1, e2->twin(), Curve(e1->source()->point(), e2->source()->point()));
+  }
+}
+
+/// The first boundary point of f straight above (up) or below p.
+Point2 vertical_hit(const std::vector<Halfedge>& boundary, const Point2& p, bool up) {
+  std::optional<FT> best;
+  const auto better = [&](const FT& y) {
+    if (up ? !(y > p.y()) : !(y < p.y())) return;
+    if (!best || (up ? y < *best : y > *best)) best = y;
+  };
+  for (const Halfedge& e : boundary) {
+    const Point2& a = e->source()->point();
+    const Point2& b = e->target()->point();
+    if (a.x() == b.x()) {
+      if (a.x() == p.x()) {
+        better(a.y());
+        better(b.y());
+      }
+      continue;
+    }
+    if ((a.x() <= p.x() && p.x() <= b.x()) || (b.x() <= p.x() && p.x() <= a.x()))
+      better(a.y() + (p.x() - a.x()) * (b.y() - a.y()) / (b.x() - a.x()));
+  }
+  if (!best) throw std::logic_error("partition_receiver: a hole with no boundary around it");
+  return {p.x(), *best};
+}
+
+/// Cuts every labelled face with holes from each hole's leftmost vertices,
+/// up from the topmost of them and down from the bottommost: each hole is
+/// joined to what lies above and below it, so no face keeps a hole.
+void cut_holes(Arrangement& arr) {
+  for (int round = 0;; ++round) {
+    if (round > 100000) throw std::logic_error("partition_receiver: holes do not close");
+    Face f;
+    bool found = false;
+    for (auto g = arr.faces_begin(); g != arr.faces_end() && !found; ++g) {
+      if (g->data() != kLit && g->data() != kShadowed) continue;
+      if (g->number_of_holes() > 0) {
+        f = g;
+        found = true;
+      }
+    }
+    if (!found) return;
+    const std::vector<Halfedge> boundary = boundary_of(f);
+    std::vector<Curve> cuts;
+    for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
+      Point2 top, bottom;
+      bool first = true;
+      auto c = *h;
+      const auto start = c;
+      do {
+        const Point2& q = c->target()->point();
+        if (first || q.x() < top.x() || (q.x() == top.x() && q.y() > top.y())) top = q;
+        if (first || q.x() < bottom.x() || (q.x() == bottom.x() && q.y() < bottom.y())) bottom = q;
+        first = false;
+      } while (++c != start);
+      cuts.emplace_back(top, vertical_hit(boundary, top, true));
+      cuts.emplace_back(bottom, vertical_hit(boundary, bottom, false));
+    }
+    for (const Curve& cut : cuts) CGAL::insert(arr, cut);
+  }
+}
+
+}  // namespace
+
+std::vector<PartitionRegion> partition_receiver(const ReceiverOutline& outline,
+                                                const std::vector<Segment2>& boundary,
+                                                const Classifier& classify,
+                                                PartitionCounts& counts) {
+  std::vector<Curve> curves;
+  const auto add = [&](const Point2& a, const Point2& b) {
+    if (a != b) curves.emplace_back(a, b);
+  };
+  const std::size_t n = outline.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) add(outline.vertices[i], outline.vertices[(i + 1) % n]);
+  for (const auto& t : outline.fan) {  // the diagonals: the surface's parity is known off them
+    add(outline.vertices[t[0]], outline.vertices[t[1]]);
+    add(outline.vertices[t[2]], outline.vertices[t[0]]);
+  }
+  for (const Segment2& s : boundary) add(s.source(), s.target());
+
+  Arrangement arr;
+  LabelKeeper keeper(arr);
+  CGAL::insert(arr, curves.begin(), curves.end());
+  label_faces(arr, outline, classify, counts);
+  merge_alike(arr);
+  cut_holes(arr);
+
+  std::vector<PartitionRegion> regions;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (f->data() != kLit && f->data() != kShadowed) continue;
+    PartitionRegion region;
+    region.cls = f->data() == kLit ? FootprintClass::lit : FootprintClass::shadowed;
+    auto c = f->outer_ccb();
+    const auto first = c;
+    do {
+      if (c->twin()->face() == f)
+        throw std::logic_error("partition_receiver: a region's boundary runs along itself");
+      region.ring.push_back(c->source()->point());
+    } while (++c != first);
+    FT twice;
+    for (std::size_t i = 0; i < region.ring.size(); ++i) {
+      const Point2& a = region.ring[i];
+      const Point2& b = region.ring[(i + 1) % region.ring.size()];
+      twice += a.x() * b.y() - a.y() * b.x();
+    }
+    region.area = twice / 2;
+    regions.push_back(std::move(region));
+  }
+  return regions;
+}
+
+}  // namespace umbra::geometry::detail

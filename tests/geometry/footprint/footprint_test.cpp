@@ -1,0 +1,157 @@
+// Footprints on hand-built scenes whose regions follow from the geometry by
+// hand: exact vertices and areas. y is up; the floor is y = 0.
+#include <geometry/footprint/footprint.h>
+#include <geometry/oracle/shadow_oracle.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+namespace umbra::geometry {
+namespace {
+
+Model polygon_model(std::string name, std::vector<Vec3> v) {
+  Model m;
+  m.name = std::move(name);
+  m.vertices = std::move(v);
+  Polygon p;
+  for (std::uint32_t i = 0; i < m.vertices.size(); ++i) p.push_back(i);
+  m.polygons = {p};
+  return m;
+}
+
+/// [-10, 10]² at y = 0, counter-clockwise seen from above.
+Model floor_model() {
+  return polygon_model("floor", {{-10, 0, -10}, {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}});
+}
+/// The square [-1, 1]² at height 1, counter-clockwise seen from above.
+Model occluder() {
+  return polygon_model("occluder", {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}});
+}
+
+Light point_light(Vec3 at) {
+  Light l;
+  l.position = at;
+  return l;
+}
+Light directional_light(Vec3 d) {
+  Light l;
+  l.type = LightType::directional;
+  l.direction = d;
+  return l;
+}
+
+Scene floor_and_occluder(Light light) {
+  Scene s;
+  s.models = {floor_model(), occluder()};
+  s.lights = {light};
+  return s;
+}
+
+std::vector<const FootprintRegion*> regions_of(const Footprints& f, std::uint32_t model,
+                                               FootprintClass cls) {
+  std::vector<const FootprintRegion*> out;
+  for (const FootprintRegion& r : f.regions)
+    if (r.model == model && r.cls == cls) out.push_back(&r);
+  return out;
+}
+
+std::set<std::tuple<double, double, double>> vertex_set(const FootprintRegion& r) {
+  std::set<std::tuple<double, double, double>> out;
+  for (const Vec3& v : r.vertices) out.insert({v.x, v.y, v.z});
+  return out;
+}
+
+double signed_area_xz_from_above(const FootprintRegion& r) {
+  // Seen from +y (x right, z toward the viewer down the screen), counter-
+  // clockwise is negative in (x, z): (x, z) -> (z, x) is the front's frame.
+  double twice = 0;
+  for (std::size_t i = 0; i < r.vertices.size(); ++i) {
+    const Vec3& a = r.vertices[i];
+    const Vec3& b = r.vertices[(i + 1) % r.vertices.size()];
+    twice += a.z * b.x - a.x * b.z;
+  }
+  return twice / 2;
+}
+
+TEST(Footprint, SquareOverAFloorCastsTheSquareScaledFromThePointLight) {
+  const Footprints f = compute_footprints(floor_and_occluder(point_light({0, 2, 0})));
+  const auto shadowed = regions_of(f, 0, FootprintClass::shadowed);
+  ASSERT_EQ(shadowed.size(), 1u);
+  EXPECT_EQ(vertex_set(*shadowed[0]), (std::set<std::tuple<double, double, double>>{
+                                          {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}}));
+  EXPECT_EQ(shadowed[0]->area, 16);
+  EXPECT_EQ(shadowed[0]->facing, 1);
+  EXPECT_EQ(shadowed[0]->triangle, -1);
+  // The lit rest has a hole: it comes as simple pieces that add up.
+  const auto lit = regions_of(f, 0, FootprintClass::lit);
+  ASSERT_GE(lit.size(), 2u);
+  double lit_area = 0;
+  for (const auto* r : lit) {
+    lit_area += r->area;
+    EXPECT_GT(signed_area_xz_from_above(*r), 0) << "counter-clockwise seen from the front";
+  }
+  EXPECT_EQ(lit_area, 384);
+  // The occluder is lit whole, seen from above.
+  EXPECT_TRUE(regions_of(f, 1, FootprintClass::shadowed).empty());
+  ASSERT_EQ(regions_of(f, 1, FootprintClass::lit).size(), 1u);
+  EXPECT_EQ(regions_of(f, 1, FootprintClass::lit)[0]->area, 4);
+
+  ASSERT_EQ(f.receivers.size(), 2u);
+  EXPECT_EQ(f.receivers[0].area, 400);
+  EXPECT_EQ(f.receivers[0].lit_area, 384);
+  EXPECT_EQ(f.receivers[0].shadowed_area, 16);
+  EXPECT_EQ(f.receivers[0].facing, 1);
+  EXPECT_EQ(f.receivers[0].sunlit_fraction, 0.96);
+  EXPECT_EQ(f.receivers[1].sunlit_fraction, 1.0);
+}
+
+TEST(Footprint, DirectionalLightStraightDownCastsTheSquareItself) {
+  const Footprints f = compute_footprints(floor_and_occluder(directional_light({0, -1, 0})));
+  const auto shadowed = regions_of(f, 0, FootprintClass::shadowed);
+  ASSERT_EQ(shadowed.size(), 1u);
+  EXPECT_EQ(vertex_set(*shadowed[0]), (std::set<std::tuple<double, double, double>>{
+                                          {-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}));
+  EXPECT_EQ(f.receivers[0].shadowed_area, 4);
+}
+
+TEST(Footprint, LightInTheReceiversPlaneLeavesItWholeWithFacingZero) {
+  const Footprints f = compute_footprints(floor_and_occluder(point_light({20, 0, 0})));
+  const auto floor_regions = regions_of(f, 0, FootprintClass::shadowed);
+  ASSERT_EQ(floor_regions.size(), 1u);
+  EXPECT_EQ(floor_regions[0]->facing, 0);
+  EXPECT_EQ(floor_regions[0]->area, 400);
+  EXPECT_TRUE(regions_of(f, 0, FootprintClass::lit).empty());
+  EXPECT_EQ(f.receivers[0].sunlit_fraction, 0);
+}
+
+TEST(Footprint, BackFacingReceiverIsJudgedFromTheLightsSide) {
+  // A light below the floor: the floor faces away (-1), and nothing lies
+  // between its underside and the light, so it is lit.
+  const Footprints f = compute_footprints(floor_and_occluder(point_light({0, -3, 0})));
+  const auto lit = regions_of(f, 0, FootprintClass::lit);
+  ASSERT_EQ(lit.size(), 1u);
+  EXPECT_EQ(lit[0]->facing, -1);
+  EXPECT_EQ(f.receivers[0].sunlit_fraction, 0);
+  // The occluder is behind the floor: the floor shadows it whole.
+  ASSERT_EQ(regions_of(f, 1, FootprintClass::shadowed).size(), 1u);
+}
+
+TEST(Footprint, RefusesLimitedLightsAndUnknownReceivers) {
+  Scene s = floor_and_occluder(point_light({0, 2, 0}));
+  s.lights[0].light_end = 5;
+  EXPECT_THROW(compute_footprints(s), std::invalid_argument);
+  s.lights[0].light_end.reset();
+  FootprintOptions o;
+  o.receivers = {"nosuch"};
+  EXPECT_THROW(compute_footprints(s, o), std::invalid_argument);
+  s.models[0].receives = false;
+  s.models[1].receives = false;
+  EXPECT_THROW(compute_footprints(s), std::invalid_argument);
+  o.receivers = {"floor"};
+  EXPECT_EQ(compute_footprints(s, o).receivers.size(), 1u);
+}
+
+}  // namespace
+}  // namespace umbra::geometry
