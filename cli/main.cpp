@@ -4,6 +4,7 @@
 // production executable carries no fuzzing code.
 #include <CLI/CLI.hpp>
 #include <cli/exit_codes.h>
+#include <cli/footprint_command.h>
 #include <cli/merge_command.h>
 #include <cli/render_command.h>
 #include <cli/validate_command.h>
@@ -34,6 +35,7 @@ constexpr const char* kFooter =
     "  umbra render data/scenes/default.json -o out/default.exr\n"
     "  umbra validate data/scenes/default.json --image out/default.exr\n"
     "  umbra volume data/scenes/default.json -o out/default.volume.ply\n"
+    "  umbra footprint data/scenes/default.json -o out/default.footprint.ply\n"
     "  umbra fuzz check --count 50 --seed 1\n"
     "  umbra fuzz real --per-mesh 3 --seed 1\n"
     "\n"
@@ -79,6 +81,8 @@ int main(int argc, char** argv) {
   CLI::App* render = add_render_command(app, render_args);
   CLI::App* validate = add_validate_command(app, validate_args);
   CLI::App* volume = add_volume_command(app, volume_args);
+  FootprintArgs footprint_args;
+  CLI::App* footprint = add_footprint_command(app, footprint_args);
   MergeArgs merge_args;
   CLI::App* merge = add_merge_command(app, merge_args);
   // Listed in --help only: main() hands `fuzz` to umbra-fuzz before parsing.
@@ -93,7 +97,8 @@ int main(int argc, char** argv) {
   };
   if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
     fmt::print(stderr,
-               "umbra: unknown command '{}'; commands: render, validate, volume, merge, fuzz (see "
+               "umbra: unknown command '{}'; commands: render, validate, volume, footprint, merge, "
+               "fuzz (see "
                "'umbra --help')\n",
                argv[1]);
     return kExitBadInput;
@@ -108,6 +113,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return run_render(render_args);
     if (validate->parsed()) return run_validate(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
+    if (footprint->parsed()) return run_footprint(footprint_args);
     if (merge->parsed()) return run_merge(merge_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;

@@ -241,18 +241,40 @@ std::vector<std::uint32_t> receiving_models(const Scene& scene, const FootprintO
   return out;
 }
 
-}  // namespace
-
-Footprints compute_footprints(const Scene& scene, const FootprintOptions& options) {
+std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOptions& options) {
   if (scene.lights.empty()) throw std::invalid_argument("footprint: the scene has no lights");
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    if (scene.lights[i].light_end)
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t l : options.lights) {
+    if (l >= scene.lights.size())
+      throw std::invalid_argument(
+          fmt::format("--lights: no light {} (the scene has {})", l, scene.lights.size()));
+    if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
+  }
+  if (options.lights.empty())
+    for (std::uint32_t l = 0; l < scene.lights.size(); ++l) out.push_back(l);
+  std::sort(out.begin(), out.end());
+  for (std::uint32_t l : out) {
+    if (scene.lights[l].light_end && !options.ignore_light_end)
       throw std::invalid_argument(fmt::format(
           "footprint: light {} has light_end, whose sphere cuts receivers along circles, not "
-          "polygons; footprints need unlimited point or directional lights",
-          i));
+          "polygons (choose other lights with --lights, or --ignore-light-end)",
+          l));
   }
-  const std::vector<std::uint32_t> models = receiving_models(scene, options);
+  return out;
+}
+
+}  // namespace
+
+Footprints compute_footprints(const Scene& input, const FootprintOptions& options) {
+  const std::vector<std::uint32_t> lights = chosen_lights(input, options);
+  const std::vector<std::uint32_t> models = receiving_models(input, options);
+  // With ignore_light_end, the same scene with every light unlimited.
+  std::optional<Scene> unlimited;
+  if (options.ignore_light_end) {
+    unlimited = input;
+    for (Light& l : unlimited->lights) l.light_end.reset();
+  }
+  const Scene& scene = unlimited ? *unlimited : input;
 
   Footprints out;
   auto start = util::Clock::now();
@@ -260,9 +282,8 @@ Footprints compute_footprints(const Scene& scene, const FootprintOptions& option
   vo.caps = false;
   vo.threads = options.threads;
   const ShadowVolumes volumes = build_shadow_volumes(scene, vo);
-  std::vector<LightSides> sides;
-  for (std::uint32_t l = 0; l < scene.lights.size(); ++l)
-    sides.push_back(light_sides(scene, volumes, l));
+  std::vector<LightSides> sides(scene.lights.size());
+  for (std::uint32_t l : lights) sides[l] = light_sides(scene, volumes, l);
   const SceneIndex index(scene);
   std::vector<std::vector<PolygonSurface>> surfaces(scene.models.size());
   for (std::uint32_t m : models) surfaces[m] = model_surfaces(scene.models[m]);
@@ -273,7 +294,7 @@ Footprints compute_footprints(const Scene& scene, const FootprintOptions& option
     std::uint32_t light, model, polygon;
   };
   std::vector<Item> items;
-  for (std::uint32_t l = 0; l < scene.lights.size(); ++l)
+  for (std::uint32_t l : lights)
     for (std::uint32_t m : models)
       for (std::uint32_t p = 0; p < scene.models[m].polygons.size(); ++p)
         items.push_back({l, m, p});

@@ -63,6 +63,11 @@ struct FootprintOptions {
   /// Names of the receiving models; empty: every model whose `receives` is
   /// true. Names not in the scene and an empty selection are refused.
   std::vector<std::string> receivers;
+  /// Indices of the lights to use; empty: every light.
+  std::vector<std::uint32_t> lights;
+  /// Treat lights with light_end as unlimited (their sphere of influence
+  /// is not applied); without it such a light is refused.
+  bool ignore_light_end = false;
   /// Threads over (light, receiver) pairs; 0: what the process may use.
   /// The result does not depend on it.
   unsigned threads = 0;
@@ -88,8 +93,9 @@ struct Footprints {
 
 /// The footprints of `scene`. Throws std::invalid_argument with one line
 /// naming the light or the option for what footprints cannot do: a light
-/// with light_end (its sphere cuts receivers along circles, not polygons),
-/// a scene without lights, an unknown receiver name or no receiver at all.
+/// with light_end (its sphere cuts receivers along circles, not polygons)
+/// unless ignore_light_end, a scene without lights, a light index out of
+/// range, an unknown receiver name or no receiver at all.
 Footprints compute_footprints(const Scene& scene, const FootprintOptions& options = {});
 
 }  // namespace umbra::geometry

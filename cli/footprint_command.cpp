@@ -1,0 +1,151 @@
+#include <cli/exit_codes.h>
+#include <cli/footprint_command.h>
+#include <cli/output_files.h>
+#include <cli/parse_checks.h>
+#include <cli/stats_json.h>
+#include <geometry/export/footprint_export.h>
+#include <geometry/footprint/footprint.h>
+#include <geometry/io/scene_json.h>
+#include <util/atomic_files.h>
+#include <util/input_error.h>
+#include <util/phase_clock.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+namespace umbra::cli {
+
+namespace fs = std::filesystem;
+
+CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "footprint", "Partition every receiver into exact lit and shadowed polygons");
+  cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args.output,
+                  "Output: .ply (one face per region with light, model, polygon, triangle, "
+                  "class, facing) or .csv (one row per light and receiver polygon); default "
+                  "<scene stem>.footprint.ply in the current directory")
+      ->check(non_empty_path())
+      ->type_name("OUT");
+  cmd->add_option("--csv", args.csv, "Also write the per-receiver summary CSV to FILE")
+      ->check(non_empty_path())
+      ->type_name("FILE");
+  cmd->add_option("--receivers", args.receivers,
+                  "Models that receive, by name (default: every model without "
+                  "\"receives\": false)")
+      ->delimiter(',')
+      ->type_name("NAME,...");
+  cmd->add_option("--lights", args.lights, "Lights to use, by index (default: every light)")
+      ->delimiter(',')
+      ->type_name("I,...");
+  cmd->add_flag("--ignore-light-end", args.ignore_light_end,
+                "Treat lights with light_end as unlimited (without it they are refused)");
+  cmd->add_option("--stats-json", args.stats_json,
+                  "Write counts and timings as JSON to FILE ('-' = stdout)")
+      ->check(non_empty_path())
+      ->type_name("FILE");
+  cmd->add_option("--threads", args.threads,
+                  "Worker threads over receivers (0 = the CPUs the process may use); the output "
+                  "does not depend on it")
+      ->check(thread_count())
+      ->type_name("N");
+  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  cmd->footer(
+      "Example:\n"
+      "  umbra footprint data/scenes/default.json -o out/default.footprint.ply --csv "
+      "out/default.csv\n"
+      "Lights need no light_end (a range cuts receivers along circles). Regions are simple\n"
+      "polygons, counter-clockwise seen from the receiver's front (docs/footprints.md).\n"
+      "Files are written only when everything succeeded.");
+  return cmd;
+}
+
+int run_footprint(const FootprintArgs& args) {
+  const auto start = util::Clock::now();
+  const fs::path scene_path = args.scene;
+  const fs::path output = args.output.empty()
+                              ? fs::path(fs::path(args.scene).stem().string() + ".footprint.ply")
+                              : fs::path(args.output);
+  const bool stats_to_stdout = args.stats_json == "-";
+
+  check_output_path(output, {".ply", ".csv"});
+  std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
+  if (!args.csv.empty()) {
+    check_output_path(args.csv, {".csv"});
+    outputs.push_back({args.csv, "--csv"});
+  }
+  if (!args.stats_json.empty() && !stats_to_stdout) {
+    check_output_path(args.stats_json, {});
+    outputs.push_back({args.stats_json, "--stats-json"});
+  }
+  check_outputs_distinct({{scene_path, "the input scene"}}, outputs);
+
+  auto phase = util::Clock::now();
+  const geometry::Scene scene = geometry::load_scene(scene_path);
+  check_outputs_distinct(scene_inputs(scene), outputs);
+  const double seconds_load = util::seconds_since(phase);
+
+  geometry::FootprintOptions options;
+  options.receivers = args.receivers;
+  options.lights.assign(args.lights.begin(), args.lights.end());
+  options.ignore_light_end = args.ignore_light_end;
+  options.threads = args.threads;
+  geometry::Footprints footprints;
+  try {
+    footprints = geometry::compute_footprints(scene, options);
+  } catch (const std::invalid_argument& e) {
+    // What footprints refuse (limited lights, unknown receivers) is the
+    // scene's or the options' doing.
+    throw util::InputError(scene_path.string(), e.what());
+  }
+
+  phase = util::Clock::now();
+  auto files = geometry::footprint_files(footprints, scene, output);
+  if (!args.csv.empty()) files.emplace_back(args.csv, geometry::footprint_csv(footprints, scene));
+  util::write_all_or_nothing(files);
+  const double seconds_write = util::seconds_since(phase);
+
+  const geometry::FootprintStats& s = footprints.stats;
+  if (!args.stats_json.empty()) {
+    nlohmann::ordered_json j;
+    j["scene"] = scene_path.string();
+    j["output"] = output.string();
+    j["csv"] = args.csv.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.csv);
+    j["lights"] = scene.lights.size();
+    j["receivers"] = s.receivers;
+    j["receiver_polygons"] = footprints.receivers.size();
+    j["regions"] = s.regions;
+    j["vertices"] = s.vertices;
+    j["boundary_segments"] = s.boundary_segments;
+    j["classified_faces"] = s.classified_faces;
+    double area = 0, lit = 0, shadowed = 0;
+    for (const auto& r : footprints.receivers) {
+      area += r.area;
+      lit += r.lit_area;
+      shadowed += r.shadowed_area;
+    }
+    j["area"] = {{"total", area}, {"lit", lit}, {"shadowed", shadowed}};
+    j["seconds"] = {{"load", seconds_load},
+                    {"volumes", s.seconds_volumes},
+                    {"partition", s.seconds_partition},
+                    {"write", seconds_write},
+                    {"total", util::seconds_since(start)}};
+    emit_json(j, args.stats_json);
+  }
+  if (!args.quiet) {
+    std::FILE* stream = stats_to_stdout ? stderr : stdout;
+    fmt::print(stream, "wrote {}{}: {} regions on {} receiver polygons, {} lights, {:.2f} s\n",
+               output.string(), args.csv.empty() ? std::string() : " + " + args.csv,
+               s.regions, footprints.receivers.size() / std::max<std::size_t>(1, scene.lights.size()),
+               scene.lights.size(), util::seconds_since(start));
+  }
+  return kExitSuccess;
+}
+
+}  // namespace umbra::cli

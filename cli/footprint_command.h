@@ -1,0 +1,30 @@
+#pragma once
+// `umbra footprint SCENE -o OUT.ply|.csv [--csv FILE] [--receivers NAME,...]`
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace umbra::cli {
+
+struct FootprintArgs {
+  std::string scene;
+  std::string output;  ///< by extension (geometry/export/footprint_export.h)
+  std::string csv;     ///< an extra per-receiver summary; empty: none
+  std::vector<std::string> receivers;  ///< model names; empty: every model that receives
+  std::vector<unsigned> lights;        ///< light indices; empty: every light
+  bool ignore_light_end = false;
+  std::string stats_json;              ///< empty: none; "-": stdout
+  bool quiet = false;
+  unsigned threads = 0;
+};
+
+/// Adds the `footprint` subcommand to `app`, parsing into `args`.
+CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args);
+
+/// Loads the scene, partitions every receiver into lit and shadowed
+/// regions (geometry/footprint/footprint.h) and writes them. Returns the
+/// exit code; throws util::InputError on bad input, before any output.
+int run_footprint(const FootprintArgs& args);
+
+}  // namespace umbra::cli
