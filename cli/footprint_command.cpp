@@ -141,8 +141,8 @@ int run_footprint(const FootprintArgs& args) {
   if (!args.quiet) {
     std::FILE* stream = stats_to_stdout ? stderr : stdout;
     fmt::print(stream, "wrote {}{}: {} regions on {} receiver polygons, {} lights, {:.2f} s\n",
-               output.string(), args.csv.empty() ? std::string() : " + " + args.csv,
-               s.regions, footprints.receivers.size() / std::max<std::size_t>(1, scene.lights.size()),
+               output.string(), args.csv.empty() ? std::string() : " + " + args.csv, s.regions,
+               footprints.receivers.size() / std::max<std::size_t>(1, scene.lights.size()),
                scene.lights.size(), util::seconds_since(start));
   }
   return kExitSuccess;

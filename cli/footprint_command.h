@@ -9,12 +9,12 @@ namespace umbra::cli {
 
 struct FootprintArgs {
   std::string scene;
-  std::string output;  ///< by extension (geometry/export/footprint_export.h)
-  std::string csv;     ///< an extra per-receiver summary; empty: none
+  std::string output;                  ///< by extension (geometry/export/footprint_export.h)
+  std::string csv;                     ///< an extra per-receiver summary; empty: none
   std::vector<std::string> receivers;  ///< model names; empty: every model that receives
   std::vector<unsigned> lights;        ///< light indices; empty: every light
   bool ignore_light_end = false;
-  std::string stats_json;              ///< empty: none; "-": stdout
+  std::string stats_json;  ///< empty: none; "-": stdout
   bool quiet = false;
   unsigned threads = 0;
 };

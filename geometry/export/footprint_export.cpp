@@ -20,8 +20,7 @@ namespace {
 
 std::string ply_text(const Footprints& f) {
   const IndexedFaces indexed = index_faces(
-      f.regions.size(),
-      [&](std::size_t i) { return std::span<const Vec3>(f.regions[i].vertices); },
+      f.regions.size(), [&](std::size_t i) { return std::span<const Vec3>(f.regions[i].vertices); },
       "write_footprints: region");
   std::vector<FaceAttribute> columns{{"light", {}},    {"model", {}}, {"polygon", {}},
                                      {"triangle", {}}, {"class", {}}, {"facing", {}}};
@@ -70,8 +69,8 @@ std::string footprint_csv(const Footprints& f, const Scene& scene) {
 }
 
 std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& footprints,
-                                                             const Scene& scene,
-                                                             const fs::path& path) {
+                                                              const Scene& scene,
+                                                              const fs::path& path) {
   const std::string ext = detail::to_lower(path.extension().string());
   std::vector<std::pair<fs::path, std::string>> files;
   if (ext == ".ply") {

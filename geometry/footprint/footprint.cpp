@@ -172,8 +172,15 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
     result.segments += segments.size();
     PartitionCounts counts;
     std::vector<PartitionRegion> parts = partition_receiver(outline, segments, classify, counts);
-    std::stable_sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
-      return a.cls < b.cls;  // shadowed first
+    // A canonical order, whatever order the arrangement's faces came in:
+    // each ring from its lexicographically smallest vertex, shadowed
+    // regions first, then by that vertex.
+    for (PartitionRegion& part : parts)
+      std::rotate(part.ring.begin(), std::min_element(part.ring.begin(), part.ring.end()),
+                  part.ring.end());
+    std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
+      if (a.cls != b.cls) return a.cls < b.cls;
+      return a.ring.front() < b.ring.front();
     });
     result.faces += counts.classified_faces;
 
