@@ -51,8 +51,8 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
       ->check(non_empty_path())
       ->type_name("FILE");
   cmd->add_option("--threads", args.threads,
-                  "Worker threads over receivers (0 = the CPUs the process may use); the output "
-                  "does not depend on it")
+                  "Worker threads building the volumes (0 = the CPUs the process may use; the "
+                  "partition runs on one for now); the output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");

@@ -68,8 +68,9 @@ struct FootprintOptions {
   /// Treat lights with light_end as unlimited (their sphere of influence
   /// is not applied); without it such a light is refused.
   bool ignore_light_end = false;
-  /// Threads over (light, receiver) pairs; 0: what the process may use.
-  /// The result does not depend on it.
+  /// Threads building the volumes; 0: what the process may use. The
+  /// partition itself runs on one thread for now (footprint.cpp says
+  /// why). The result does not depend on it.
   unsigned threads = 0;
 };
 

@@ -31,7 +31,8 @@ Scene random_scene(std::uint64_t seed) {
   casters.name = "casters";
   const int n = std::uniform_int_distribution<int>(1, 5)(rng);
   for (int i = 0; i < n; ++i) {
-    const int k = std::uniform_int_distribution<int>(3, 4)(rng);  // triangles and (maybe twisted) quads
+    const int k =
+        std::uniform_int_distribution<int>(3, 4)(rng);  // triangles and (maybe twisted) quads
     Polygon p;
     for (int j = 0; j < k; ++j) {
       p.push_back(static_cast<std::uint32_t>(casters.vertices.size()));
