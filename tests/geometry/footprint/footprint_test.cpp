@@ -138,6 +138,90 @@ TEST(Footprint, BackFacingReceiverIsJudgedFromTheLightsSide) {
   ASSERT_EQ(regions_of(f, 1, FootprintClass::shadowed).size(), 1u);
 }
 
+using Points = std::set<std::tuple<double, double, double>>;
+
+double area_of(const Footprints& f, std::uint32_t model, FootprintClass cls) {
+  double a = 0;
+  for (const FootprintRegion* r : regions_of(f, model, cls)) a += r->area;
+  return a;
+}
+
+TEST(Footprint, LShapedReceiverTakesTheShadowItHas) {
+  // The L [0,4]² minus [2,4]², counter-clockwise from above; the square
+  // [1,3]² at y = 1 straight above: the shadow is the L-shaped hexagon.
+  Scene s;
+  s.models = {
+      polygon_model("l", {{0, 0, 0}, {0, 0, 4}, {2, 0, 4}, {2, 0, 2}, {4, 0, 2}, {4, 0, 0}}),
+      polygon_model("square", {{1, 1, 1}, {1, 1, 3}, {3, 1, 3}, {3, 1, 1}})};
+  s.lights = {directional_light({0, -1, 0})};
+  const Footprints f = compute_footprints(s);
+  const auto shadowed = regions_of(f, 0, FootprintClass::shadowed);
+  ASSERT_EQ(shadowed.size(), 1u);
+  EXPECT_EQ(vertex_set(*shadowed[0]),
+            (Points{{1, 0, 1}, {1, 0, 3}, {2, 0, 3}, {2, 0, 2}, {3, 0, 2}, {3, 0, 1}}));
+  EXPECT_EQ(shadowed[0]->area, 3);
+  EXPECT_EQ(area_of(f, 0, FootprintClass::lit), 9);
+}
+
+TEST(Footprint, TwistedQuadShadowsByParity) {
+  // A bow-tie at y = 1: its surface is the two triangles left and right of
+  // its crossing at (1, 1), and so is its shadow straight down.
+  Scene s;
+  s.models = {floor_model(),
+              polygon_model("bow tie", {{0, 1, 0}, {2, 1, 2}, {2, 1, 0}, {0, 1, 2}})};
+  s.lights = {directional_light({0, -1, 0})};
+  FootprintOptions o;
+  o.receivers = {"floor"};
+  const Footprints f = compute_footprints(s, o);
+  const auto shadowed = regions_of(f, 0, FootprintClass::shadowed);
+  ASSERT_EQ(shadowed.size(), 2u);
+  std::set<Points> got{vertex_set(*shadowed[0]), vertex_set(*shadowed[1])};
+  EXPECT_EQ(got, (std::set<Points>{{{0, 0, 0}, {1, 0, 1}, {0, 0, 2}},
+                                   {{2, 0, 0}, {2, 0, 2}, {1, 0, 1}}}));
+  EXPECT_EQ(area_of(f, 0, FootprintClass::shadowed), 2);
+}
+
+TEST(Footprint, CasterLyingOnTheReceiverCastsNothingOnIt) {
+  Scene s;
+  s.models = {floor_model(),
+              polygon_model("mat", {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}})};
+  s.lights = {point_light({0, 3, 0})};
+  const Footprints f = compute_footprints(s);
+  EXPECT_TRUE(regions_of(f, 0, FootprintClass::shadowed).empty());
+  ASSERT_EQ(regions_of(f, 0, FootprintClass::lit).size(), 1u);
+  EXPECT_EQ(regions_of(f, 0, FootprintClass::lit)[0]->area, 400);
+}
+
+TEST(Footprint, FoldedReceiverShadowsItsOwnOtherTriangle) {
+  // A non-planar quad: fan triangle 0 lies on the floor, triangle 1 leans
+  // over it and covers it exactly seen from straight above.
+  Scene s;
+  s.models = {polygon_model("fold", {{0, 0, 0}, {2, 0, 0}, {2, 0, 2}, {2, 2, 0}})};
+  s.lights = {directional_light({0, -1, 0})};
+  const Footprints f = compute_footprints(s);
+  const auto shadowed = regions_of(f, 0, FootprintClass::shadowed);
+  ASSERT_EQ(shadowed.size(), 1u);
+  EXPECT_EQ(shadowed[0]->triangle, 0);
+  EXPECT_EQ(vertex_set(*shadowed[0]), (Points{{0, 0, 0}, {2, 0, 0}, {2, 0, 2}}));
+  EXPECT_EQ(shadowed[0]->area, 2);
+  const auto lit = regions_of(f, 0, FootprintClass::lit);
+  ASSERT_EQ(lit.size(), 1u);
+  EXPECT_EQ(lit[0]->triangle, 1);
+}
+
+TEST(Footprint, DirectionalLightAlongAWallsEdgesCastsNoShadowArea) {
+  // A wall in the plane x = 0, straight down light: the light is in the
+  // wall's plane (facing 0, whole, no light) and the floor is lit whole.
+  Scene s;
+  s.models = {floor_model(), polygon_model("wall", {{0, 0, -1}, {0, 0, 1}, {0, 2, 1}, {0, 2, -1}})};
+  s.lights = {directional_light({0, -1, 0})};
+  const Footprints f = compute_footprints(s);
+  EXPECT_TRUE(regions_of(f, 0, FootprintClass::shadowed).empty());
+  EXPECT_EQ(area_of(f, 0, FootprintClass::lit), 400);
+  ASSERT_EQ(regions_of(f, 1, FootprintClass::shadowed).size(), 1u);
+  EXPECT_EQ(regions_of(f, 1, FootprintClass::shadowed)[0]->facing, 0);
+}
+
 TEST(Footprint, RefusesLimitedLightsAndUnknownReceivers) {
   Scene s = floor_and_occluder(point_light({0, 2, 0}));
   s.lights[0].light_end = 5;
