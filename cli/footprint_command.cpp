@@ -27,10 +27,13 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
   cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", args.output,
-                  "Output: .ply (one face per region with light, model, polygon, triangle, "
-                  "class, facing) or .csv (one row per light and receiver polygon); default "
-                  "<scene stem>.footprint.ply in the current directory")
+  cmd->add_option(
+         "-o,--output", args.output,
+         "Output: .ply (one face per region with light, model, polygon, triangle, "
+         "class, facing), .obj (faces grouped by light and class as g/usemtl light<L>_lit and "
+         "light<L>_shadowed, materials in the sidecar <stem>.mtl) or .csv (one row per "
+         "light and receiver polygon); default "
+         "<scene stem>.footprint.ply in the current directory")
       ->check(non_empty_path())
       ->type_name("OUT");
   cmd->add_option("--csv", args.csv, "Also write the per-receiver summary CSV to FILE")
@@ -74,8 +77,13 @@ int run_footprint(const FootprintArgs& args) {
                               : fs::path(args.output);
   const bool stats_to_stdout = args.stats_json == "-";
 
-  check_output_path(output, {".ply", ".csv"});
+  check_output_path(output, {".ply", ".obj", ".csv"});
   std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
+  const auto sidecar = geometry::footprint_sidecar_path(output);
+  if (sidecar) {
+    check_output_path(*sidecar, {});
+    outputs.push_back({*sidecar, "the sidecar of -o"});
+  }
   if (!args.csv.empty()) {
     check_output_path(args.csv, {".csv"});
     outputs.push_back({args.csv, "--csv"});
@@ -140,8 +148,9 @@ int run_footprint(const FootprintArgs& args) {
   }
   if (!args.quiet) {
     std::FILE* stream = stats_to_stdout ? stderr : stdout;
-    fmt::print(stream, "wrote {}{}: {} regions on {} receiver polygons, {} lights, {:.2f} s\n",
-               output.string(), args.csv.empty() ? std::string() : " + " + args.csv, s.regions,
+    fmt::print(stream, "wrote {}{}{}: {} regions on {} receiver polygons, {} lights, {:.2f} s\n",
+               output.string(), sidecar ? " + " + sidecar->filename().string() : std::string(),
+               args.csv.empty() ? std::string() : " + " + args.csv, s.regions,
                footprints.receivers.size() / std::max<std::size_t>(1, scene.lights.size()),
                scene.lights.size(), util::seconds_since(start));
   }

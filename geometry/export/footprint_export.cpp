@@ -1,6 +1,6 @@
-// Footprints to PLY and CSV (docs/footprints.md). PLY bytes come from
-// mesh_text.h for the reason given in volume_export.cpp: double positions
-// that read back bit-identical.
+// Footprints to PLY, OBJ (+ MTL) and CSV (docs/footprints.md). PLY bytes and
+// OBJ numbers come from mesh_text.h for the reason given in
+// volume_export.cpp: double positions that read back bit-identical.
 #include <geometry/export/footprint_export.h>
 #include <geometry/export/indexed_faces.h>
 #include <geometry/export/mesh_text.h>
@@ -8,7 +8,10 @@
 #include <util/atomic_files.h>
 #include <util/input_error.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -37,6 +40,78 @@ std::string ply_text(const Footprints& f) {
       "class 1 lit, 0 shadowed; facing +1 light in front, -1 behind, 0 in the plane; triangle "
       "-1 for a planar polygon"};
   return ply_bytes(indexed, comments, columns);
+}
+
+bool is_lit(const FootprintRegion& r) { return r.cls == FootprintClass::lit; }
+
+/// "light<L>_lit" or "light<L>_shadowed": the OBJ group and material names.
+std::string group_name(std::uint32_t light, bool lit) {
+  return "light" + std::to_string(light) + (lit ? "_lit" : "_shadowed");
+}
+
+/// Region indices by light, lit before shadowed, otherwise in the order of
+/// Footprints::regions (stable), so each (light, class) is one run of faces.
+std::vector<std::size_t> obj_order(const Footprints& f) {
+  std::vector<std::size_t> order(f.regions.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const FootprintRegion& ra = f.regions[a];
+    const FootprintRegion& rb = f.regions[b];
+    if (ra.light != rb.light) return ra.light < rb.light;
+    return is_lit(ra) && !is_lit(rb);
+  });
+  return order;
+}
+
+std::string grouped_obj_text(const Footprints& f, const fs::path& mtl) {
+  const std::vector<std::size_t> order = obj_order(f);
+  const IndexedFaces indexed = index_faces(
+      order.size(),
+      [&](std::size_t i) { return std::span<const Vec3>(f.regions[order[i]].vertices); },
+      "write_footprints: region");
+  std::string out = "# umbra shadow footprints: " + std::to_string(indexed.faces.size()) +
+                    " regions, one face per region, grouped by light and class\n"
+                    "mtllib " +
+                    mtl.filename().string() + "\n";
+  for (const Vec3& v : indexed.vertices) {
+    out += "v ";
+    append_double(out, v.x);
+    out += ' ';
+    append_double(out, v.y);
+    out += ' ';
+    append_double(out, v.z);
+    out += '\n';
+  }
+  std::string current;
+  for (std::size_t i = 0; i < indexed.faces.size(); ++i) {
+    const FootprintRegion& r = f.regions[order[i]];
+    const std::string group = group_name(r.light, is_lit(r));
+    if (group != current) {
+      out += "g " + group + "\nusemtl " + group + "\n";
+      current = group;
+    }
+    out += 'f';
+    for (const std::uint32_t v : indexed.faces[i])
+      out += ' ' + std::to_string(std::uint64_t{v} + 1);
+    out += '\n';
+  }
+  return out;
+}
+
+/// One material per (light, class) present in `f`, in the OBJ's order.
+std::string mtl_text(const Footprints& f) {
+  std::string out = "# umbra shadow footprints: lit warm white, shadowed dark blue\n";
+  std::string previous;
+  for (const std::size_t i : obj_order(f)) {
+    const FootprintRegion& r = f.regions[i];
+    const std::string name = group_name(r.light, is_lit(r));
+    if (name == previous) continue;
+    previous = name;
+    out += "\nnewmtl " + name + "\n";
+    out += is_lit(r) ? "Kd 1 0.9 0.7\n" : "Kd 0.1 0.15 0.4\n";
+    out += "Ka 0 0 0\nKs 0 0 0\nd 1\nillum 1\n";
+  }
+  return out;
 }
 
 /// A CSV field: quoted when it holds a comma, a quote or a line break.
@@ -68,6 +143,22 @@ std::string footprint_csv(const Footprints& f, const Scene& scene) {
   return out;
 }
 
+std::optional<fs::path> footprint_sidecar_path(const fs::path& path) {
+  const std::string ext = detail::to_lower(path.extension().string());
+  if (ext == ".ply" || ext == ".csv") return std::nullopt;
+  if (ext == ".obj") {
+    const std::string name = path.filename().string();
+    if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }))
+      throw util::InputError(path.string(),
+                             "an .obj footprint name cannot hold whitespace: its mtllib line "
+                             "names the .mtl sidecar");
+    return fs::path(path).replace_extension(".mtl");
+  }
+  throw util::InputError(
+      path.string(),
+      "unknown footprint extension '" + path.extension().string() + "'; use .ply, .obj or .csv");
+}
+
 std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& footprints,
                                                               const Scene& scene,
                                                               const fs::path& path) {
@@ -75,11 +166,16 @@ std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& 
   std::vector<std::pair<fs::path, std::string>> files;
   if (ext == ".ply") {
     files.emplace_back(path, ply_text(footprints));
+  } else if (ext == ".obj") {
+    const fs::path mtl = *footprint_sidecar_path(path);
+    files.emplace_back(path, grouped_obj_text(footprints, mtl));
+    files.emplace_back(mtl, mtl_text(footprints));
   } else if (ext == ".csv") {
     files.emplace_back(path, footprint_csv(footprints, scene));
   } else {
-    throw util::InputError(path.string(), "unknown footprint extension '" +
-                                              path.extension().string() + "'; use .ply or .csv");
+    throw util::InputError(
+        path.string(),
+        "unknown footprint extension '" + path.extension().string() + "'; use .ply, .obj or .csv");
   }
   return files;
 }

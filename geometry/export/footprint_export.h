@@ -4,6 +4,7 @@
 #include <geometry/footprint/footprint.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,12 +19,21 @@ namespace umbra::geometry {
 ///   receiver's front) with the int properties `light`, `model`, `polygon`,
 ///   `triangle` (-1 for a planar polygon), `class` (1 lit, 0 shadowed) and
 ///   `facing` (+1, -1, 0).
+/// - `.obj`: for importers that drop per-face attributes (Blender, assimp,
+///   meshio): coordinates as the shortest decimal text that reads back to the
+///   same double, one n-gon per region, the faces grouped by light and class
+///   (lights in order, lit before shadowed), each run after
+///   `g light<L>_lit` and `usemtl light<L>_lit` (`_shadowed` likewise), and
+///   `mtllib <stem>.mtl` naming the sidecar (footprint_sidecar_path), one
+///   material per group: lit warm white, shadowed dark blue. The file name
+///   must hold no whitespace (the `mtllib` line could not name its sidecar).
 /// - `.csv`: one row per (light, receiving model, polygon): light, model,
 ///   model_name, polygon, facing, area, lit_area, shadowed_area,
 ///   sunlit_fraction, with shortest round-trip doubles.
 ///
-/// Written whole or not at all (util/atomic_files.h). Throws InputError
-/// naming `path` for an unknown extension or a failed write.
+/// Written whole or not at all, sidecar included (util/atomic_files.h).
+/// Throws InputError naming `path` for an unknown extension, an `.obj` name
+/// with whitespace, or a failed write.
 void write_footprints(const Footprints& footprints, const Scene& scene,
                       const std::filesystem::path& path);
 
@@ -35,7 +45,12 @@ std::vector<std::pair<std::filesystem::path, std::string>> footprint_files(
 
 /// The extensions write_footprints accepts, for checking an output path
 /// before any work.
-inline constexpr const char* kFootprintExtensions[] = {".ply", ".csv"};
+inline constexpr const char* kFootprintExtensions[] = {".ply", ".obj", ".csv"};
+
+/// The sidecar write_footprints writes beside `path`: `<stem>.mtl` in the
+/// same directory for `.obj`; nothing for `.ply` and `.csv`. Throws
+/// InputError naming `path` for an unknown extension.
+std::optional<std::filesystem::path> footprint_sidecar_path(const std::filesystem::path& path);
 
 /// The CSV text write_footprints writes for `.csv`.
 std::string footprint_csv(const Footprints& footprints, const Scene& scene);
