@@ -22,9 +22,13 @@ using Halfedge = Arrangement::Halfedge_handle;
 constexpr int kUnknown = -1, kOutside = 0, kLit = 1, kShadowed = 2;
 
 /// Faces split by a cut inherit the label of the face they came from.
-class LabelKeeper : public CGAL::Arr_observer<Arrangement> {
+/// It observes the base Arrangement_on_surface_2, the type the arrangement
+/// calls its observers through: CGAL 5.5's Arr_observer<Arrangement_2> is a
+/// different class that Arrangement_2 casts to the base's observer type, a
+/// cast UBSan's vptr check rightly reports.
+class LabelKeeper : public CGAL::Arr_observer<Arrangement::Base> {
  public:
-  explicit LabelKeeper(Arrangement& arr) : CGAL::Arr_observer<Arrangement>(arr) {}
+  explicit LabelKeeper(Arrangement& arr) : CGAL::Arr_observer<Arrangement::Base>(arr) {}
   void after_split_face(Face f, Face new_f, bool /*is_hole*/) override {
     new_f->set_data(f->data());
   }
