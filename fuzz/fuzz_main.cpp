@@ -23,11 +23,7 @@ int main(int argc, char** argv) {
   FuzzArgs args;
   FuzzRealArgs real_args;
   const FuzzCommands fuzz = add_fuzz_commands(app, args, real_args);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return report_parse_error(app, e, "umbra fuzz");
-  }
+  if (const auto exit_code = parse_command_line(app, argc, argv, "umbra fuzz")) return *exit_code;
   return run_verb([&] {
     if (fuzz.check->parsed()) return run_fuzz_check(args);
     if (fuzz.exp->parsed()) return run_fuzz_export(args);
