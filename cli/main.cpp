@@ -72,6 +72,8 @@ int main(int argc, char** argv) {
                        "Print the version and exit");
   app.require_subcommand(1);
   app.footer(kFooter);
+  // --help shows every option's default (verbs inherit this when added).
+  app.option_defaults()->always_capture_default();
 
   RenderArgs render_args;
   ValidateArgs validate_args;

@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 namespace umbra::cli {
 
@@ -78,6 +79,10 @@ raster::ShadowMapOptions map_options(const RenderArgs& args) {
 }  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
+  // The --map-* and --ray-* options are unset unless given (a method's
+  // options with another method are refused); --help shows the library's
+  // defaults they stand for.
+  const raster::ShadowMapOptions kMapDefaults{};
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with its shadows");
   cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")
       ->required()
@@ -88,38 +93,44 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->check(non_empty_path())
       ->type_name("OUT");
   cmd->add_option("--method", args.method,
-                  "Shadow method: volume (default; exact at every sample), map (Williams' shadow "
+                  "Shadow method: volume (exact at every sample), map (Williams' shadow "
                   "maps), ray (Embree occlusion rays) or exact (the oracle; slow)")
       ->transform(CLI::IsMember({"volume", "map", "ray", "exact"}, CLI::ignore_case))
       ->type_name("METHOD");
   cmd->add_option("--map-resolution", args.map_resolution,
                   "Texels across each shadow-map view: a 90° cube face of a point light, the "
-                  "scene's extent for a directional light (map only; default 2048)")
+                  "scene's extent for a directional light (map only)")
       ->check(CLI::Range(1, 16384))
+      ->default_str(std::to_string(kMapDefaults.resolution))
       ->type_name("N");
   cmd->add_option("--map-bias", args.map_bias,
                   "Constant depth bias in float depth spacings at the sample's depth, as "
-                  "glPolygonOffset's units (map only; default 4; docs/shadow-maps.md)")
+                  "glPolygonOffset's units (map only; docs/shadow-maps.md)")
       ->check(finite_non_negative())
+      ->default_str(fmt::format("{}", kMapDefaults.constant_bias))
       ->type_name("B");
   cmd->add_option("--map-slope-bias", args.map_slope_bias,
                   "Slope-scaled depth bias: times the receiver's depth change per texel, as "
-                  "glPolygonOffset's factor (map only; default 1.5; docs/shadow-maps.md)")
+                  "glPolygonOffset's factor (map only; docs/shadow-maps.md)")
       ->check(finite_non_negative())
+      ->default_str(fmt::format("{}", kMapDefaults.slope_bias))
       ->type_name("S");
-  cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest (default) or bilinear")
+  cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest or bilinear (map only)")
       ->transform(CLI::IsMember({"nearest", "bilinear"}, CLI::ignore_case))
+      ->default_str(kMapDefaults.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest")
       ->type_name("KIND");
   cmd->add_flag("--map-dither", args.map_dither, "Dither the lookup position (Williams; map only)");
   cmd->add_option("--map-pcf", args.map_pcf,
-                  "Percentage-closer filter width in texels: 1 (off, default), 3 or 5 (map only; "
+                  "Percentage-closer filter width in texels: 1 (off), 3 or 5 (map only; "
                   "shadow.<i> is shadowed where less than half the filter sees the light)")
       ->check(CLI::IsMember({1, 3, 5}))
+      ->default_str(std::to_string(kMapDefaults.pcf))
       ->type_name("K");
   cmd->add_option("--ray-epsilon", args.ray_epsilon,
                   "Shadow-ray start offset as a fraction of the scene's bounding-box diagonal "
-                  "(ray only; default 1e-5)")
+                  "(ray only)")
       ->check(finite_non_negative())
+      ->default_str(fmt::format("{}", raster::RayOptions{}.epsilon))
       ->type_name("E");
   cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())

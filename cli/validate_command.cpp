@@ -74,12 +74,11 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
       ->required()
       ->check(CLI::ExistingFile)
       ->type_name("RENDER.exr");
-  cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed (default: all)")
+  cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed")
       ->check(positive_integer())
+      ->default_str("all")
       ->type_name("N");
-  cmd->add_option("--seed", args.seed, "Seed for --samples (default 1)")
-      ->check(unsigned_64())
-      ->type_name("S");
+  cmd->add_option("--seed", args.seed, "Seed for --samples")->check(unsigned_64())->type_name("S");
   cmd->add_flag("--json", args.json, "Print the report as JSON on stdout instead of text");
   cmd->add_option("--mask", args.mask,
                   "Mismatch mask PNG (default <image stem>.mismatches.png beside the image): "

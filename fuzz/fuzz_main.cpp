@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
       "  umbra fuzz real --per-mesh 3 --seed 1\n"
       "Exit codes: 0 every scene passed, 1 a scene failed or was refused, 2 bad input or "
       "usage, 3 internal error.");
+  app.option_defaults()->always_capture_default();
   FuzzArgs args;
   FuzzRealArgs real_args;
   const FuzzCommands fuzz = add_fuzz_commands(app, args, real_args);

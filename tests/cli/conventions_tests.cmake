@@ -22,3 +22,16 @@ umbra_cli_test(fuzz_unknown_option ARGS fuzz check --bogus EXIT 2
   STDERR "^umbra: unknown option '--bogus' \\(see 'umbra fuzz check --help'\\)\n$")
 umbra_cli_test(fuzz_unknown_command ARGS fuzz nope EXIT 2
   STDERR "^umbra: unknown command 'nope'; commands: check, export, real \\(see 'umbra fuzz --help'\\)\n$")
+
+# --help shows defaults, also those of options that stay unset unless given
+# (their defaults come from raster::ShadowMapOptions and RayOptions).
+umbra_cli_test(render_help_shows_defaults ARGS render --help EXIT 0
+  STDOUT "--method METHOD:[^\n]*=volume\n.*--map-resolution N:[^\n]*=2048\n.*--map-bias B:[^\n]*=4 .*--map-slope-bias S:[^\n]*=1\\.5\n.*--map-lookup KIND:[^\n]*=nearest\n.*--map-pcf K:[^\n]*=1 .*--ray-epsilon E:[^\n]*=1e-05\n.*--threads N:[^\n]*=0 .*--spp N:[^\n]*=1 ")
+umbra_cli_test(validate_help_shows_defaults ARGS validate --help EXIT 0
+  STDOUT "--samples N:[^\n]*=all .*--seed S:[^\n]*=1 ")
+umbra_cli_test(fuzz_check_help_shows_defaults ARGS fuzz check --help EXIT 0
+  STDOUT "--count [^\n]*=50 .*--width [^\n]*=32\n")
+# The shown defaults are not applied as values: a render without --map-*
+# options is not refused as if they were given.
+umbra_cli_test(render_defaults_are_not_given_options
+  ARGS render ${PROJECT_SOURCE_DIR}/data/scenes/open.json -o out.png -q EXIT 0 EXIST out.png)
