@@ -35,3 +35,41 @@ umbra_cli_test(fuzz_check_help_shows_defaults ARGS fuzz check --help EXIT 0
 # options is not refused as if they were given.
 umbra_cli_test(render_defaults_are_not_given_options
   ARGS render ${PROJECT_SOURCE_DIR}/data/scenes/open.json -o out.png -q EXIT 0 EXIST out.png)
+
+# validate --no-mask writes no mask and reports it as null; with
+# --stats-json - the JSON is all of stdout and the text summary goes to
+# stderr. The image is copied so that the default mask would land in the
+# work directory.
+set(_local_mesh ${PROJECT_SOURCE_DIR}/tests/data/scenes/local_mesh)
+umbra_cli_test(validate_no_mask ARGS validate ${_local_mesh}/scene.json --image render.exr
+  --samples 300 --no-mask --stats-json - COPY ${_local_mesh}/render.exr EXIT 0
+  STDOUT "^{\n[^\n]*\n[^\n]*\n  \"mask\": null,\n.*\n}\n$"
+  STDERR "^validated render\\.exr [^\n]*\n.*\nOK: 0 mismatches; no mask written \\(--no-mask\\)\n$"
+  ABSENT render.mismatches.png)
+umbra_cli_test(validate_stats_json_stdout_moves_summary_to_stderr ARGS validate
+  ${_local_mesh}/scene.json --image render.exr --samples 300 --mask m.png --stats-json -
+  COPY ${_local_mesh}/render.exr EXIT 0
+  STDOUT "^{\n[^\n]*\n[^\n]*\n  \"mask\": \"m\\.png\",\n.*\"seconds\": {.*\n}\n$"
+  STDERR "^validated render\\.exr [^\n]*\n.*\nOK: 0 mismatches; mask written to m\\.png\n$"
+  EXIST m.png)
+umbra_cli_test(validate_summary_on_stdout_by_default ARGS validate
+  ${_local_mesh}/scene.json --image render.exr --samples 300 COPY ${_local_mesh}/render.exr EXIT 0
+  STDOUT "^validated render\\.exr [^\n]*\n.*\nOK: 0 mismatches; mask written to render\\.mismatches\\.png\n$"
+  EXIST render.mismatches.png)
+umbra_cli_test(validate_no_mask_excludes_mask ARGS validate ${_local_mesh}/scene.json
+  --image ${_local_mesh}/render.exr --no-mask --mask m.png EXIT 2
+  STDERR "^umbra: --mask excludes --no-mask \\(see 'umbra validate --help'\\)\n$" ABSENT m.png)
+# Outputs in a directory that is not writable: refused before the work.
+foreach(case
+    "validate_mask;validate|${_local_mesh}/scene.json|--image|${_local_mesh}/render.exr|--mask|@DIR@/m.png"
+    "validate_stats_json;validate|${_local_mesh}/scene.json|--image|${_local_mesh}/render.exr|--no-mask|--stats-json|@DIR@/s.json"
+    "render_output;render|${PROJECT_SOURCE_DIR}/data/scenes/open.json|-o|@DIR@/out.png"
+    "volume_output;volume|${PROJECT_SOURCE_DIR}/data/scenes/open.json|-o|@DIR@/out.ply")
+  list(GET case 0 name)
+  list(GET case 1 args)
+  string(REPLACE "|" ";" args "${args}")
+  add_test(NAME cli.${name}_in_unwritable_directory
+    COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/cli/unwritable_directory.sh $<TARGET_FILE:umbra>
+      ${CMAKE_CURRENT_BINARY_DIR}/cli/${name}_in_unwritable_directory ${args})
+  set_tests_properties(cli.${name}_in_unwritable_directory PROPERTIES SKIP_RETURN_CODE 77)
+endforeach()
