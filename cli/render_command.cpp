@@ -4,8 +4,8 @@
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
 #include <cli/render_command.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
-#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/render.h>
@@ -188,7 +188,7 @@ int run_render(const RenderArgs& args) {
 
   RenderTimings timings;
   auto phase = std::chrono::steady_clock::now();
-  const geometry::Scene scene = geometry::load_scene(scene_path);
+  const geometry::Scene scene = load_verb_scene(scene_path);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   timings.load = util::seconds_since(phase);
 

@@ -3,9 +3,9 @@
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
-#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/validate.h>
@@ -137,7 +137,7 @@ int run_validate(const ValidateArgs& args) {
     return s;
   };
 
-  const geometry::Scene scene = geometry::load_scene(args.scene);
+  const geometry::Scene scene = load_verb_scene(args.scene);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   check_memory(raster::estimate_validate_bytes(scene), memory_limit(args.memory_limit), args.scene,
                fmt::format("validating {}x{} with {}", scene.camera.width, scene.camera.height,

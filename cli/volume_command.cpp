@@ -2,10 +2,10 @@
 #include <cli/memory_limit.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
 #include <geometry/export/volume_export.h>
-#include <geometry/io/scene_json.h>
 #include <geometry/volumes/builder.h>
 #include <raster/memory_estimate.h>
 #include <util/input_error.h>
@@ -91,7 +91,8 @@ int run_volume(const VolumeArgs& args) {
 
   VolumeTimings timings;
   auto phase = std::chrono::steady_clock::now();
-  const geometry::Scene scene = geometry::load_scene(scene_path);
+  // Volumes need no eye: a scene without a camera loads.
+  const geometry::Scene scene = load_verb_scene(scene_path, {.require_camera = false});
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   check_memory(raster::estimate_volume_bytes(scene), memory_limit(args.memory_limit),
                scene_path.string(), "building the volumes of " + lights_text(scene.lights.size()));

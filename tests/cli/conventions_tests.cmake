@@ -73,3 +73,28 @@ foreach(case
       ${CMAKE_CURRENT_BINARY_DIR}/cli/${name}_in_unwritable_directory ${args})
   set_tests_properties(cli.${name}_in_unwritable_directory PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
+
+# Volumes need no camera: a JSON or glTF scene without one exports; render
+# and validate still refuse it with one line. A scene without a light is a
+# warning, not an error, for every verb.
+set(_no_camera ${PROJECT_SOURCE_DIR}/tests/data/scenes/no_camera)
+umbra_cli_test(volume_json_without_camera ARGS volume ${_no_camera}/two_lights.json -o v.ply EXIT 0
+  STDOUT "^wrote v\\.ply: [1-9][0-9]* faces [^\n]*light 0: [1-9][0-9]*, light 1: [1-9][0-9]*\\)" EXIST v.ply)
+umbra_cli_test(volume_gltf_without_camera ARGS volume ${_no_camera}/two_lights.gltf -o v.obj EXIT 0
+  STDOUT "^wrote v\\.obj \\+ v\\.obj\\.json: [1-9][0-9]* faces" EXIST v.obj v.obj.json)
+umbra_cli_test(render_json_without_camera ARGS render ${_no_camera}/two_lights.json -o r.png EXIT 2
+  STDERR "^umbra: [^\n]*two_lights\\.json: camera: missing required field 'camera'\n$" ABSENT r.png)
+umbra_cli_test(render_gltf_without_camera ARGS render ${_no_camera}/two_lights.gltf -o r.png EXIT 2
+  STDERR "^umbra: [^\n]*two_lights\\.gltf: cameras: no node of the scene instances a perspective camera[^\n]*\n$"
+  ABSENT r.png)
+umbra_cli_test(validate_without_camera ARGS validate ${_no_camera}/two_lights.json --image render.exr
+  --no-mask COPY ${_local_mesh}/render.exr EXIT 2
+  STDERR "^umbra: [^\n]*two_lights\\.json: camera: missing required field 'camera'\n$")
+foreach(verb_out render:r.png volume:r.ply)
+  string(REPLACE ":" ";" verb_out "${verb_out}")
+  list(GET verb_out 0 verb)
+  list(GET verb_out 1 out)
+  umbra_cli_test(${verb}_warns_without_lights ARGS ${verb} ${_no_camera}/no_lights.json -o ${out} EXIT 0
+    STDOUT "^wrote r\\." STDERR "^umbra: warning: [^\n]*no_lights\\.json: the scene has no lights; only ambient light, no shadow anywhere\n$"
+    EXIST ${out})
+endforeach()
