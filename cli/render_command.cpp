@@ -15,7 +15,9 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -56,11 +58,30 @@ std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
     hash = (hash ^ 0xff) * 0x100000001b3ull;  // a separator
   };
   for (const fs::path& input : scene.inputs) add(util::read_input_file(input, "scene input"));
-  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}", args.method, args.spp,
-                  !args.no_shadows, args.map_resolution.value_or(-1), args.map_bias.value_or(-1),
-                  args.map_slope_bias.value_or(-1), args.map_lookup.value_or(""), args.map_dither,
-                  args.map_pcf.value_or(-1), args.ray_epsilon.value_or(-1)));
+  // Exposure only when given, so that labels of earlier tiles still match.
+  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}{}", args.method,
+                  args.spp, !args.no_shadows, args.map_resolution.value_or(-1),
+                  args.map_bias.value_or(-1), args.map_slope_bias.value_or(-1),
+                  args.map_lookup.value_or(""), args.map_dither, args.map_pcf.value_or(-1),
+                  args.ray_epsilon.value_or(-1),
+                  args.exposure != 0 ? fmt::format(" exposure={}", args.exposure) : ""));
   return fmt::format("{:016x}", hash);
+}
+
+/// A finite number of stops with |EV| <= raster::kMaxExposure.
+CLI::Validator exposure_stops() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0;
+        const char* last = text.data() + text.size();
+        const auto [end, ec] = std::from_chars(text.data(), last, value);
+        if (text.empty() || ec != std::errc() || end != last ||
+            !(std::abs(value) <= raster::kMaxExposure))
+          return fmt::format("'{}' is not a finite number of stops from -{} to {}", text,
+                             raster::kMaxExposure, raster::kMaxExposure);
+        return {};
+      },
+      fmt::format("-{}..{}", raster::kMaxExposure, raster::kMaxExposure));
 }
 
 raster::ShadowMapOptions map_options(const RenderArgs& args) {
@@ -151,6 +172,12 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "partial OpenEXR; `umbra merge` assembles the N tiles into the frame, "
                   "byte-identical to one render (docs/scale.md)")
       ->type_name("I/N");
+  cmd->add_option("--exposure", args.exposure,
+                  "Exposure in stops: the beauty pass is scaled by 2^EV after supersampling (AOVs "
+                  "unchanged); e.g. -14 for glTF lights in photometric units (Blender's 1000 W "
+                  "lamp arrives as 54,351 cd)")
+      ->check(exposure_stops())
+      ->type_name("EV");
   cmd->add_flag("--no-shadows", args.no_shadows,
                 "Plain render without any shadow: every light reaches every sample in its "
                 "range (volume method only; the baseline shadow costs are measured against)");
@@ -197,6 +224,7 @@ int run_render(const RenderArgs& args) {
   options.threads = args.threads;
   options.shadows = !args.no_shadows;
   options.spp = args.spp;
+  options.exposure = args.exposure;
   options.map = map_options(args);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
   if (tile) {

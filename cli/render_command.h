@@ -20,6 +20,7 @@ struct RenderArgs {
   bool no_shadows = false;  ///< the plain render (volume method only)
   int spp = 1;              ///< beauty samples per pixel: 1, 9 or 25
   std::string tile;         ///< "I/N": only tile I of N (bands of rows), as a partial EXR
+  double exposure = 0;      ///< --exposure EV (raster::RenderOptions::exposure)
   // --method map (raster::ShadowMapOptions); unset: the library's defaults.
   std::optional<int> map_resolution;
   std::optional<double> map_bias;

@@ -98,3 +98,13 @@ foreach(verb_out render:r.png volume:r.ply)
     STDOUT "^wrote r\\." STDERR "^umbra: warning: [^\n]*no_lights\\.json: the scene has no lights; only ambient light, no shadow anywhere\n$"
     EXIST ${out})
 endforeach()
+
+# --exposure EV: within +-64 stops, finite; refused otherwise before any work.
+foreach(ev 65 -64.5 nan inf x)
+  string(MAKE_C_IDENTIFIER "${ev}" id)
+  umbra_cli_test(render_exposure_${id} ARGS render scene.json --exposure ${ev} SETUP scene.json
+    EXIT 2 STDERR "^umbra: --exposure: '${ev}' is not a finite number of stops from -64 to 64 \\(see 'umbra render --help'\\)\n$"
+    ABSENT scene.png)
+endforeach()
+umbra_cli_test(render_exposure_minus_14 ARGS render ${PROJECT_SOURCE_DIR}/data/scenes/open.json
+  --exposure -14 -o out.exr EXIT 0 STDOUT "^wrote out\\.exr " EXIST out.exr)
