@@ -68,6 +68,21 @@ std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
   return fmt::format("{:016x}", hash);
 }
 
+/// -v: a line per light, then the counts and times per phase, on stderr.
+void print_render_details(const geometry::Scene& scene, const raster::RenderStats& stats,
+                          const RenderTimings& timings) {
+  for (std::size_t i = 0; i < scene.lights.size(); ++i)
+    fmt::print(stderr, "light {}: {}\n", i, describe_light(scene.lights[i]));
+  fmt::print(stderr,
+             "counts: {} pixels, {} contour edges, {} shadow polygons, {} twisted polygons\n",
+             stats.pixels, stats.contour_edges, stats.shadow_polygons, stats.twisted_polygons);
+  fmt::print(stderr,
+             "seconds: load {:.3f}, volumes {:.3f}, raster {:.3f}, decide {:.3f}, render {:.3f}, "
+             "write {:.3f}, total {:.3f}\n",
+             timings.load, stats.seconds_volumes, stats.seconds_raster, stats.seconds_decide,
+             timings.render, timings.write, timings.total);
+}
+
 /// A finite number of stops with |EV| <= raster::kMaxExposure.
 CLI::Validator exposure_stops() {
   return CLI::Validator(
@@ -161,7 +176,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->check(non_empty_path())
       ->type_name("FILE");
   add_memory_limit_option(cmd, args.memory_limit);
-  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->add_option("--spp", args.spp,
                   "Beauty samples per pixel: 1, 9 or 25 (an odd grid; shadow.<i>, count.<i> and "
                   "depth stay the pixel centre's, which validate checks)")
@@ -275,6 +290,7 @@ int run_render(const RenderArgs& args) {
     emit_json(render_stats_json(run, stats, timings), args.stats_json);
   }
 
+  if (args.verbose) print_render_details(scene, stats, timings);
   if (!args.quiet) {
     // With the statistics on stdout, keep stdout pure JSON.
     std::FILE* stream = stats_to_stdout ? stderr : stdout;

@@ -18,4 +18,14 @@ geometry::Scene load_verb_scene(const std::filesystem::path& file,
   return scene;
 }
 
+std::string describe_light(const geometry::Light& light) {
+  if (light.type == geometry::LightType::directional)
+    return fmt::format("directional toward ({}, {}, {})", light.direction.x, light.direction.y,
+                       light.direction.z);
+  std::string text =
+      fmt::format("point at ({}, {}, {})", light.position.x, light.position.y, light.position.z);
+  if (light.light_end) text += fmt::format(", light_end {}", *light.light_end);
+  return text;
+}
+
 }  // namespace umbra::cli

@@ -4,6 +4,7 @@
 #include <geometry/scene.h>
 
 #include <filesystem>
+#include <string>
 
 namespace umbra::cli {
 
@@ -13,5 +14,9 @@ namespace umbra::cli {
 /// then trivial: one warning line on stderr says so.
 geometry::Scene load_verb_scene(const std::filesystem::path& file,
                                 const geometry::SceneLoadOptions& options = {});
+
+/// A light in a few words, for -v: "point at (3, 6, 2), light_end 20",
+/// "directional toward (-1, -2, -1)".
+std::string describe_light(const geometry::Light& light);
 
 }  // namespace umbra::cli

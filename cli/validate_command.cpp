@@ -97,7 +97,7 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
       ->check(thread_count())
       ->type_name("N");
   add_memory_limit_option(cmd, args.memory_limit);
-  cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
+  add_verbosity_flags(cmd, args.verbose, args.quiet, "Print no text summary (--json still prints)");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write the report and timings per phase as JSON to FILE ('-' = stdout)")
       ->check(non_empty_path())
@@ -180,6 +180,9 @@ int run_validate(const ValidateArgs& args) {
         {"total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
     emit_json(j, args.stats_json);
   }
+  if (args.verbose)
+    fmt::print(stderr, "seconds: load {:.3f}, read {:.3f}, validate {:.3f}, write {:.3f}\n",
+               seconds_load, seconds_read, seconds_validate, seconds_write);
   if (!args.json && !args.quiet)
     print_summary(args.stats_json == "-" ? stderr : stdout, args, mask, report);
   return report.total_mismatches() > 0 ? kExitMismatches : kExitSuccess;

@@ -19,6 +19,7 @@ struct ValidateArgs {
   unsigned threads = 0;
   std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
+  bool verbose = false;    ///< -v: times per phase and a line per light on stderr
   std::string stats_json;  ///< empty: none; "-": stdout (the report plus timings)
 };
 

@@ -108,3 +108,26 @@ foreach(ev 65 -64.5 nan inf x)
 endforeach()
 umbra_cli_test(render_exposure_minus_14 ARGS render ${PROJECT_SOURCE_DIR}/data/scenes/open.json
   --exposure -14 -o out.exr EXIT 0 STDOUT "^wrote out\\.exr " EXIST out.exr)
+
+# -v/--verbose: a line per light and the times per phase on stderr, stdout
+# unchanged; -q and -v exclude each other on every verb that has both.
+umbra_cli_test(render_verbose ARGS render ${PROJECT_SOURCE_DIR}/data/scenes/two_lights.json
+  -o out.png -v EXIT 0 STDOUT "^wrote out\\.png \\([^\n]*\n$"
+  STDERR "light 0: point at \\(3, 6, 3\\), light_end 12\nlight 1: directional toward \\(1, -2, -0\\.5\\)\ncounts: 76800 pixels, [^\n]*\nseconds: load [0-9.]+, volumes [^\n]*total [0-9.]+\n$"
+  EXIST out.png)
+umbra_cli_test(volume_verbose ARGS volume ${PROJECT_SOURCE_DIR}/data/scenes/two_lights.json
+  -o out.ply --verbose EXIT 0
+  STDERR "^light 0: point at [^\n]*: [0-9]+ faces \\(type 1: [^\n]*\nlight 1: directional [^\n]*\nseconds: load [^\n]*\n$"
+  EXIST out.ply)
+umbra_cli_test(validate_verbose ARGS validate ${_local_mesh}/scene.json --image render.exr
+  --samples 100 --no-mask -v COPY ${_local_mesh}/render.exr EXIT 0
+  STDERR "^seconds: load [0-9.]+, read [0-9.]+, validate [0-9.]+, write [0-9.]+\n$")
+foreach(verb render volume validate)
+  set(_image "")
+  if(verb STREQUAL "validate")
+    set(_image --image r.exr)
+  endif()
+  umbra_cli_test(${verb}_quiet_excludes_verbose ARGS ${verb} scene.json ${_image} -q -v
+    SETUP scene.json r.exr
+    EXIT 2 STDERR "^umbra: --(quiet excludes --verbose|verbose excludes --quiet) \\(see 'umbra ${verb} --help'\\)\n$")
+endforeach()
