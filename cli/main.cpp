@@ -74,6 +74,8 @@ int main(int argc, char** argv) {
                        "Print the version and exit");
   app.require_subcommand(1);
   app.footer(kFooter);
+  // --help shows every option's default (verbs inherit this when added).
+  app.option_defaults()->always_capture_default();
 
   RenderArgs render_args;
   ValidateArgs validate_args;
@@ -89,26 +91,7 @@ int main(int argc, char** argv) {
   app.add_subcommand("fuzz",
                      "Degenerate scenes and real models: check, export, sweep (umbra-fuzz)");
 
-  // CLI11 reports an unknown verb as "A subcommand is required"; name it.
-  const auto is_verb = [&](const std::string& name) {
-    for (const CLI::App* verb : app.get_subcommands([](CLI::App*) { return true; }))
-      if (verb->get_name() == name) return true;
-    return false;
-  };
-  if (argc > 1 && argv[1][0] != '-' && !is_verb(argv[1])) {
-    fmt::print(stderr,
-               "umbra: unknown command '{}'; commands: render, validate, volume, footprint, merge, "
-               "fuzz (see "
-               "'umbra --help')\n",
-               argv[1]);
-    return kExitBadInput;
-  }
-
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return report_parse_error(app, e, "umbra");
-  }
+  if (const auto exit_code = parse_command_line(app, argc, argv, "umbra")) return *exit_code;
   return run_verb([&] {
     if (render->parsed()) return run_render(render_args);
     if (validate->parsed()) return run_validate(validate_args);

@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstring>
 #include <system_error>
 
@@ -59,6 +61,11 @@ void check_output_path(const fs::path& path, std::initializer_list<std::string_v
   if (!fs::is_directory(dir, ec))
     throw util::InputError(path.string(),
                            fmt::format("directory '{}' does not exist", dir.string()));
+  // Creating the file (a temporary, then a rename) needs write and search
+  // permission on its directory: refused now, not after the work.
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw util::InputError(path.string(), fmt::format("directory '{}' is not writable: {}",
+                                                      dir.string(), std::strerror(errno)));
   if (fs::is_directory(path, ec))
     throw util::InputError(path.string(), "is a directory; name an output file");
 }

@@ -17,7 +17,8 @@ std::string lowercase_extension(const std::filesystem::path& path);
 
 /// Throws util::InputError naming `path` when its extension is not one of
 /// `extensions` (compared case-insensitively, each with its dot: ".png"), or
-/// when its directory does not exist. An empty list accepts any extension.
+/// when its directory does not exist or this process may not create files
+/// in it (access(2) with W_OK | X_OK). An empty list accepts any extension.
 void check_output_path(const std::filesystem::path& path,
                        std::initializer_list<std::string_view> extensions);
 

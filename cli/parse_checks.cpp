@@ -30,6 +30,13 @@ Part parse_part(const std::string& option, const std::string& text) {
   return part;
 }
 
+void add_verbosity_flags(CLI::App* cmd, bool& verbose, bool& quiet, const std::string& quiet_text) {
+  CLI::Option* q = cmd->add_flag("-q,--quiet", quiet, quiet_text);
+  cmd->add_flag("-v,--verbose", verbose,
+                "Print more on stderr: times per phase and a line per light")
+      ->excludes(q);
+}
+
 CLI::Validator positive_integer() {
   return CLI::Validator(
       [](std::string& text) -> std::string {

@@ -27,6 +27,10 @@ CLI::Validator finite_non_negative();
 /// default name as if -o had not been given).
 CLI::Validator non_empty_path();
 
+/// Adds -v,--verbose (more detail on stderr) and -q,--quiet (described by
+/// `quiet_text`), which exclude each other.
+void add_verbosity_flags(CLI::App* cmd, bool& verbose, bool& quiet, const std::string& quiet_text);
+
 /// Part `index` of `count` (a shard, a tile), from "I/N".
 struct Part {
   std::uint64_t index = 0;

@@ -4,8 +4,8 @@
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
 #include <cli/render_command.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
-#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/render.h>
@@ -15,9 +15,12 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 namespace umbra::cli {
 
@@ -55,11 +58,45 @@ std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
     hash = (hash ^ 0xff) * 0x100000001b3ull;  // a separator
   };
   for (const fs::path& input : scene.inputs) add(util::read_input_file(input, "scene input"));
-  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}", args.method, args.spp,
-                  !args.no_shadows, args.map_resolution.value_or(-1), args.map_bias.value_or(-1),
-                  args.map_slope_bias.value_or(-1), args.map_lookup.value_or(""), args.map_dither,
-                  args.map_pcf.value_or(-1), args.ray_epsilon.value_or(-1)));
+  // Exposure only when given, so that labels of earlier tiles still match.
+  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}{}", args.method,
+                  args.spp, !args.no_shadows, args.map_resolution.value_or(-1),
+                  args.map_bias.value_or(-1), args.map_slope_bias.value_or(-1),
+                  args.map_lookup.value_or(""), args.map_dither, args.map_pcf.value_or(-1),
+                  args.ray_epsilon.value_or(-1),
+                  args.exposure != 0 ? fmt::format(" exposure={}", args.exposure) : ""));
   return fmt::format("{:016x}", hash);
+}
+
+/// -v: a line per light, then the counts and times per phase, on stderr.
+void print_render_details(const geometry::Scene& scene, const raster::RenderStats& stats,
+                          const RenderTimings& timings) {
+  for (std::size_t i = 0; i < scene.lights.size(); ++i)
+    fmt::print(stderr, "light {}: {}\n", i, describe_light(scene.lights[i]));
+  fmt::print(stderr,
+             "counts: {} pixels, {} contour edges, {} shadow polygons, {} twisted polygons\n",
+             stats.pixels, stats.contour_edges, stats.shadow_polygons, stats.twisted_polygons);
+  fmt::print(stderr,
+             "seconds: load {:.3f}, volumes {:.3f}, raster {:.3f}, decide {:.3f}, render {:.3f}, "
+             "write {:.3f}, total {:.3f}\n",
+             timings.load, stats.seconds_volumes, stats.seconds_raster, stats.seconds_decide,
+             timings.render, timings.write, timings.total);
+}
+
+/// A finite number of stops with |EV| <= raster::kMaxExposure.
+CLI::Validator exposure_stops() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0;
+        const char* last = text.data() + text.size();
+        const auto [end, ec] = std::from_chars(text.data(), last, value);
+        if (text.empty() || ec != std::errc() || end != last ||
+            !(std::abs(value) <= raster::kMaxExposure))
+          return fmt::format("'{}' is not a finite number of stops from -{} to {}", text,
+                             raster::kMaxExposure, raster::kMaxExposure);
+        return {};
+      },
+      fmt::format("-{}..{}", raster::kMaxExposure, raster::kMaxExposure));
 }
 
 raster::ShadowMapOptions map_options(const RenderArgs& args) {
@@ -78,6 +115,10 @@ raster::ShadowMapOptions map_options(const RenderArgs& args) {
 }  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
+  // The --map-* and --ray-* options are unset unless given (a method's
+  // options with another method are refused); --help shows the library's
+  // defaults they stand for.
+  const raster::ShadowMapOptions kMapDefaults{};
   CLI::App* cmd = app.add_subcommand("render", "Render a scene with its shadows");
   cmd->add_option("SCENE", args.scene, "Scene file (.json, .gltf or .glb)")
       ->required()
@@ -88,38 +129,44 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->check(non_empty_path())
       ->type_name("OUT");
   cmd->add_option("--method", args.method,
-                  "Shadow method: volume (default; exact at every sample), map (Williams' shadow "
+                  "Shadow method: volume (exact at every sample), map (Williams' shadow "
                   "maps), ray (Embree occlusion rays) or exact (the oracle; slow)")
       ->transform(CLI::IsMember({"volume", "map", "ray", "exact"}, CLI::ignore_case))
       ->type_name("METHOD");
   cmd->add_option("--map-resolution", args.map_resolution,
                   "Texels across each shadow-map view: a 90° cube face of a point light, the "
-                  "scene's extent for a directional light (map only; default 2048)")
+                  "scene's extent for a directional light (map only)")
       ->check(CLI::Range(1, 16384))
+      ->default_str(std::to_string(kMapDefaults.resolution))
       ->type_name("N");
   cmd->add_option("--map-bias", args.map_bias,
                   "Constant depth bias in float depth spacings at the sample's depth, as "
-                  "glPolygonOffset's units (map only; default 4; docs/shadow-maps.md)")
+                  "glPolygonOffset's units (map only; docs/shadow-maps.md)")
       ->check(finite_non_negative())
+      ->default_str(fmt::format("{}", kMapDefaults.constant_bias))
       ->type_name("B");
   cmd->add_option("--map-slope-bias", args.map_slope_bias,
                   "Slope-scaled depth bias: times the receiver's depth change per texel, as "
-                  "glPolygonOffset's factor (map only; default 1.5; docs/shadow-maps.md)")
+                  "glPolygonOffset's factor (map only; docs/shadow-maps.md)")
       ->check(finite_non_negative())
+      ->default_str(fmt::format("{}", kMapDefaults.slope_bias))
       ->type_name("S");
-  cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest (default) or bilinear")
+  cmd->add_option("--map-lookup", args.map_lookup, "Depth lookup: nearest or bilinear (map only)")
       ->transform(CLI::IsMember({"nearest", "bilinear"}, CLI::ignore_case))
+      ->default_str(kMapDefaults.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest")
       ->type_name("KIND");
   cmd->add_flag("--map-dither", args.map_dither, "Dither the lookup position (Williams; map only)");
   cmd->add_option("--map-pcf", args.map_pcf,
-                  "Percentage-closer filter width in texels: 1 (off, default), 3 or 5 (map only; "
+                  "Percentage-closer filter width in texels: 1 (off), 3 or 5 (map only; "
                   "shadow.<i> is shadowed where less than half the filter sees the light)")
       ->check(CLI::IsMember({1, 3, 5}))
+      ->default_str(std::to_string(kMapDefaults.pcf))
       ->type_name("K");
   cmd->add_option("--ray-epsilon", args.ray_epsilon,
                   "Shadow-ray start offset as a fraction of the scene's bounding-box diagonal "
-                  "(ray only; default 1e-5)")
+                  "(ray only)")
       ->check(finite_non_negative())
+      ->default_str(fmt::format("{}", raster::RayOptions{}.epsilon))
       ->type_name("E");
   cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())
@@ -129,7 +176,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->check(non_empty_path())
       ->type_name("FILE");
   add_memory_limit_option(cmd, args.memory_limit);
-  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->add_option("--spp", args.spp,
                   "Beauty samples per pixel: 1, 9 or 25 (an odd grid; shadow.<i>, count.<i> and "
                   "depth stay the pixel centre's, which validate checks)")
@@ -140,6 +187,12 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "partial OpenEXR; `umbra merge` assembles the N tiles into the frame, "
                   "byte-identical to one render (docs/scale.md)")
       ->type_name("I/N");
+  cmd->add_option("--exposure", args.exposure,
+                  "Exposure in stops: the beauty pass is scaled by 2^EV after supersampling (AOVs "
+                  "unchanged); e.g. -14 for glTF lights in photometric units (Blender's 1000 W "
+                  "lamp arrives as 54,351 cd)")
+      ->check(exposure_stops())
+      ->type_name("EV");
   cmd->add_flag("--no-shadows", args.no_shadows,
                 "Plain render without any shadow: every light reaches every sample in its "
                 "range (volume method only; the baseline shadow costs are measured against)");
@@ -177,7 +230,7 @@ int run_render(const RenderArgs& args) {
 
   RenderTimings timings;
   auto phase = std::chrono::steady_clock::now();
-  const geometry::Scene scene = geometry::load_scene(scene_path);
+  const geometry::Scene scene = load_verb_scene(scene_path);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   timings.load = util::seconds_since(phase);
 
@@ -186,6 +239,7 @@ int run_render(const RenderArgs& args) {
   options.threads = args.threads;
   options.shadows = !args.no_shadows;
   options.spp = args.spp;
+  options.exposure = args.exposure;
   options.map = map_options(args);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
   if (tile) {
@@ -236,6 +290,7 @@ int run_render(const RenderArgs& args) {
     emit_json(render_stats_json(run, stats, timings), args.stats_json);
   }
 
+  if (args.verbose) print_render_details(scene, stats, timings);
   if (!args.quiet) {
     // With the statistics on stdout, keep stdout pure JSON.
     std::FILE* stream = stats_to_stdout ? stderr : stdout;

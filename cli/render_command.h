@@ -17,9 +17,11 @@ struct RenderArgs {
   std::string stats_json;         ///< empty: none; "-": stdout
   std::string memory_limit;       ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
+  bool verbose = false;     ///< -v: times per phase and a line per light on stderr
   bool no_shadows = false;  ///< the plain render (volume method only)
   int spp = 1;              ///< beauty samples per pixel: 1, 9 or 25
   std::string tile;         ///< "I/N": only tile I of N (bands of rows), as a partial EXR
+  double exposure = 0;      ///< --exposure EV (raster::RenderOptions::exposure)
   // --method map (raster::ShadowMapOptions); unset: the library's defaults.
   std::optional<int> map_resolution;
   std::optional<double> map_bias;

@@ -69,7 +69,7 @@ nlohmann::ordered_json validation_json(const ValidateRun& run,
   nlohmann::ordered_json j;
   j["scene"] = run.scene;
   j["image"] = run.image;
-  j["mask"] = run.mask;
+  j["mask"] = run.mask ? nlohmann::ordered_json(*run.mask) : nlohmann::ordered_json();
   j["width"] = report.width;
   j["height"] = report.height;
   j["samples"] = run.samples == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(run.samples);

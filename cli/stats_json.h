@@ -44,8 +44,8 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
 struct ValidateRun {
   std::string scene;
   std::string image;
-  std::string mask;
-  std::uint64_t samples = 0;  ///< 0: every pixel
+  std::optional<std::string> mask;  ///< none: --no-mask (null in the JSON)
+  std::uint64_t samples = 0;        ///< 0: every pixel
   std::uint64_t seed = 1;
 };
 

@@ -3,9 +3,9 @@
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
-#include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
 #include <raster/validate.h>
@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace umbra::cli {
@@ -45,21 +46,25 @@ std::vector<float> mask_colours(const raster::ValidationReport& report) {
   return rgb;
 }
 
-void print_summary(const ValidateArgs& args, const fs::path& mask,
+/// The text summary, on `out`: stdout, or stderr when stdout carries the
+/// JSON of --stats-json -.
+void print_summary(std::FILE* out, const ValidateArgs& args, const std::optional<fs::path>& mask,
                    const raster::ValidationReport& report) {
-  fmt::print("validated {} against {} ({}x{})\n", args.image, args.scene, report.width,
+  fmt::print(out, "validated {} against {} ({}x{})\n", args.image, args.scene, report.width,
              report.height);
-  fmt::print("pixels checked: {} ({} background)\n", report.pixels_checked, report.background);
+  fmt::print(out, "pixels checked: {} ({} background)\n", report.pixels_checked, report.background);
   for (std::size_t i = 0; i < report.lights.size(); ++i) {
     const raster::LightReport& l = report.lights[i];
-    fmt::print(
-        "light {}: {} compared, {} boundary, {} mismatches "
-        "({} false lit, {} false shadowed, {} range)\n",
-        i, l.compared, l.boundary, l.mismatches, l.false_lit, l.false_shadowed, l.wrong_range);
+    fmt::print(out,
+               "light {}: {} compared, {} boundary, {} mismatches "
+               "({} false lit, {} false shadowed, {} range)\n",
+               i, l.compared, l.boundary, l.mismatches, l.false_lit, l.false_shadowed,
+               l.wrong_range);
   }
   const std::uint64_t total = report.total_mismatches();
-  fmt::print("{}: {} mismatches; mask written to {}\n", total == 0 ? "OK" : "FAILED", total,
-             mask.string());
+  fmt::print(
+      out, "{}: {} mismatches; {}\n", total == 0 ? "OK" : "FAILED", total,
+      mask ? "mask written to " + mask->string() : std::string("no mask written (--no-mask)"));
 }
 
 }  // namespace
@@ -74,23 +79,25 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
       ->required()
       ->check(CLI::ExistingFile)
       ->type_name("RENDER.exr");
-  cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed (default: all)")
+  cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed")
       ->check(positive_integer())
+      ->default_str("all")
       ->type_name("N");
-  cmd->add_option("--seed", args.seed, "Seed for --samples (default 1)")
-      ->check(unsigned_64())
-      ->type_name("S");
+  cmd->add_option("--seed", args.seed, "Seed for --samples")->check(unsigned_64())->type_name("S");
   cmd->add_flag("--json", args.json, "Print the report as JSON on stdout instead of text");
-  cmd->add_option("--mask", args.mask,
-                  "Mismatch mask PNG (default <image stem>.mismatches.png beside the image): "
-                  "dark grey agree, yellow boundary, red mismatch, black not checked")
-      ->check(non_empty_path())
-      ->type_name("MASK.png");
+  CLI::Option* mask =
+      cmd->add_option("--mask", args.mask,
+                      "Mismatch mask PNG (default <image stem>.mismatches.png beside the image): "
+                      "dark grey agree, yellow boundary, red mismatch, black not checked")
+          ->check(non_empty_path())
+          ->type_name("MASK.png");
+  cmd->add_flag("--no-mask", args.no_mask, "Write no mask image (the JSON report's mask is null)")
+      ->excludes(mask);
   cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())
       ->type_name("N");
   add_memory_limit_option(cmd, args.memory_limit);
-  cmd->add_flag("-q,--quiet", args.quiet, "Print no text summary (--json still prints)");
+  add_verbosity_flags(cmd, args.verbose, args.quiet, "Print no text summary (--json still prints)");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write the report and timings per phase as JSON to FILE ('-' = stdout)")
       ->check(non_empty_path())
@@ -105,11 +112,15 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
 
 int run_validate(const ValidateArgs& args) {
   const fs::path image = args.image;
-  const fs::path mask = args.mask.empty()
-                            ? image.parent_path() / (image.stem().string() + ".mismatches.png")
-                            : fs::path(args.mask);
-  check_output_path(mask, {".png"});
-  std::vector<NamedFile> outputs = {{mask, args.mask.empty() ? "the default mask" : "--mask"}};
+  std::optional<fs::path> mask;
+  if (!args.no_mask)
+    mask = args.mask.empty() ? image.parent_path() / (image.stem().string() + ".mismatches.png")
+                             : fs::path(args.mask);
+  std::vector<NamedFile> outputs;
+  if (mask) {
+    check_output_path(*mask, {".png"});
+    outputs.push_back({*mask, args.mask.empty() ? "the default mask" : "--mask"});
+  }
   if (!args.stats_json.empty() && args.stats_json != "-") {
     check_output_path(args.stats_json, {});
     outputs.push_back({args.stats_json, "--stats-json"});
@@ -126,7 +137,7 @@ int run_validate(const ValidateArgs& args) {
     return s;
   };
 
-  const geometry::Scene scene = geometry::load_scene(args.scene);
+  const geometry::Scene scene = load_verb_scene(args.scene);
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   check_memory(raster::estimate_validate_bytes(scene), memory_limit(args.memory_limit), args.scene,
                fmt::format("validating {}x{} with {}", scene.camera.width, scene.camera.height,
@@ -149,13 +160,13 @@ int run_validate(const ValidateArgs& args) {
   bar.finish();
   const double seconds_validate = lap();
 
-  raster::write_rgb_png(mask, report.width, report.height, mask_colours(report));
+  if (mask) raster::write_rgb_png(*mask, report.width, report.height, mask_colours(report));
   const double seconds_write = lap();
 
   ValidateRun run;
   run.scene = args.scene;
   run.image = args.image;
-  run.mask = mask.string();
+  if (mask) run.mask = mask->string();
   run.samples = args.samples;
   run.seed = args.seed;
   if (args.json) emit_json(validation_json(run, report), "-");
@@ -169,7 +180,11 @@ int run_validate(const ValidateArgs& args) {
         {"total", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
     emit_json(j, args.stats_json);
   }
-  if (!args.json && !args.quiet) print_summary(args, mask, report);
+  if (args.verbose)
+    fmt::print(stderr, "seconds: load {:.3f}, read {:.3f}, validate {:.3f}, write {:.3f}\n",
+               seconds_load, seconds_read, seconds_validate, seconds_write);
+  if (!args.json && !args.quiet)
+    print_summary(args.stats_json == "-" ? stderr : stdout, args, mask, report);
   return report.total_mismatches() > 0 ? kExitMismatches : kExitSuccess;
 }
 

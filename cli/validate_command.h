@@ -1,6 +1,6 @@
 #pragma once
 // `umbra validate SCENE --image RENDER.exr [--samples N] [--seed S] [--json]
-//                       [--mask MASK.png] [--threads N] [--quiet]`
+//                       [--mask MASK.png | --no-mask] [--threads N] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
@@ -14,10 +14,12 @@ struct ValidateArgs {
   std::uint64_t samples = 0;  ///< 0: every pixel
   std::uint64_t seed = 1;
   bool json = false;
-  std::string mask;  ///< empty: <image stem>.mismatches.png beside the image
+  std::string mask;      ///< empty: <image stem>.mismatches.png beside the image
+  bool no_mask = false;  ///< --no-mask: write no mask image
   unsigned threads = 0;
   std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
+  bool verbose = false;    ///< -v: times per phase and a line per light on stderr
   std::string stats_json;  ///< empty: none; "-": stdout (the report plus timings)
 };
 

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace umbra::cli {
@@ -14,10 +15,20 @@ namespace umbra::cli {
 /// contract promises one line on stderr.
 std::string one_line(std::string text);
 
-/// Help and --version go to stdout with exit 0 (CLI11 prints them); every
-/// other parse error is a usage error: CLI11's message on one line, exit 2,
-/// pointing to `COMMAND --help`.
-int report_parse_error(const CLI::App& app, const CLI::ParseError& e, const char* command);
+/// Parses the command line into `app` (a program whose verbs are its
+/// subcommands; `program` is what the user typed: "umbra", "umbra fuzz").
+/// Returns the exit code when the program must end now: 0 after --help or
+/// --version (printed on stdout), 2 after a usage error, printed as one line
+/// on stderr that ends by pointing to `PROGRAM VERB --help` (or `PROGRAM
+/// --help` before any verb). nullopt: a verb was parsed, run it.
+///
+/// CLI11 checks required options and subcommands before it looks at
+/// arguments it did not recognise, so `umbra --bogus` would read "A
+/// subcommand is required" and `umbra render --bogus` "SCENE is required".
+/// Here an unknown option is what is reported ("unknown option '--bogus'"),
+/// then an unknown verb ("unknown command 'X'"), then a missing verb ("a
+/// command is required"), then CLI11's own message.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const char* program);
 
 /// Runs a parsed verb and turns what it throws into one line on stderr and
 /// an exit code.

@@ -2,10 +2,10 @@
 #include <cli/memory_limit.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
 #include <geometry/export/volume_export.h>
-#include <geometry/io/scene_json.h>
 #include <geometry/volumes/builder.h>
 #include <raster/memory_estimate.h>
 #include <util/input_error.h>
@@ -57,7 +57,7 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
       ->check(thread_count())
       ->type_name("N");
   add_memory_limit_option(cmd, args.memory_limit);
-  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
       "  umbra volume data/scenes/default.json -o out/default.volume.ply\n"
@@ -91,7 +91,8 @@ int run_volume(const VolumeArgs& args) {
 
   VolumeTimings timings;
   auto phase = std::chrono::steady_clock::now();
-  const geometry::Scene scene = geometry::load_scene(scene_path);
+  // Volumes need no eye: a scene without a camera loads.
+  const geometry::Scene scene = load_verb_scene(scene_path, {.require_camera = false});
   check_outputs_distinct(scene_inputs(scene), outputs);  // its meshes and buffers too
   check_memory(raster::estimate_volume_bytes(scene), memory_limit(args.memory_limit),
                scene_path.string(), "building the volumes of " + lights_text(scene.lights.size()));
@@ -118,6 +119,16 @@ int run_volume(const VolumeArgs& args) {
     emit_json(volume_stats_json(run, volumes, counts, timings), args.stats_json);
   }
 
+  if (args.verbose) {
+    for (std::size_t i = 0; i < counts.lights.size(); ++i) {
+      const FaceCounts& c = counts.lights[i];
+      fmt::print(
+          stderr, "light {}: {}: {} faces (type 1: {}, type 2: {}, type 3: {}; {} twisted)\n", i,
+          describe_light(scene.lights[i]), c.total, c.type[0], c.type[1], c.type[2], c.twisted);
+    }
+    fmt::print(stderr, "seconds: load {:.3f}, volumes {:.3f}, write {:.3f}, total {:.3f}\n",
+               timings.load, timings.volumes, timings.write, timings.total);
+  }
   if (!args.quiet) {
     // With the statistics on stdout, keep stdout pure JSON.
     std::FILE* stream = stats_to_stdout ? stderr : stdout;

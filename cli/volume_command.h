@@ -12,6 +12,7 @@ struct VolumeArgs {
   std::string stats_json;    ///< empty: none; "-": stdout
   std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;
+  bool verbose = false;  ///< -v: times per phase and a line per light on stderr
   unsigned threads = 0;  ///< lights built in parallel; 0 = the CPUs the process may use
 };
 

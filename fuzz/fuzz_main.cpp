@@ -20,14 +20,11 @@ int main(int argc, char** argv) {
       "  umbra fuzz real --per-mesh 3 --seed 1\n"
       "Exit codes: 0 every scene passed, 1 a scene failed or was refused, 2 bad input or "
       "usage, 3 internal error.");
+  app.option_defaults()->always_capture_default();
   FuzzArgs args;
   FuzzRealArgs real_args;
   const FuzzCommands fuzz = add_fuzz_commands(app, args, real_args);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return report_parse_error(app, e, "umbra fuzz");
-  }
+  if (const auto exit_code = parse_command_line(app, argc, argv, "umbra fuzz")) return *exit_code;
   return run_verb([&] {
     if (fuzz.check->parsed()) return run_fuzz_check(args);
     if (fuzz.exp->parsed()) return run_fuzz_export(args);

@@ -19,6 +19,7 @@ CLI::App* add_fuzz_real_command(CLI::App& fuzz, FuzzRealArgs& args) {
   cmd->add_option("--meshes", args.meshes,
                   "Mesh file or folder, walked for .off/.obj/.ply/.stl (repeatable; default: "
                   "/usr/share/assimp/models/{OBJ,PLY,OFF,STL} and build/cgal-data/data/meshes)")
+      ->default_str("")
       ->type_name("DIR");
   cmd->add_option("--seed", args.seed, "Seed of every mesh's scene sequence");
   CLI::Option* per_mesh =

@@ -23,7 +23,7 @@ Box models_bounds(const Scene& scene) {
 
 Box scene_bounds(const Scene& scene) {
   Box box = models_bounds(scene);
-  box.extend(scene.camera.eye);
+  if (scene.has_camera) box.extend(scene.camera.eye);
   for (const Light& l : scene.lights)
     if (l.type == LightType::point) box.extend(l.position);
   return box;

@@ -16,9 +16,9 @@ struct Box {
   bool empty() const { return lo.x > hi.x; }
 };
 
-/// Every model's vertices (shadow-casting or not), the eye and the point
-/// lights: eye segments to any surface point, and every point a volume must
-/// clear, run inside it.
+/// Every model's vertices (shadow-casting or not), the eye (when the scene
+/// has a camera) and the point lights: eye segments to any surface point,
+/// and every point a volume must clear, run inside it.
 Box scene_bounds(const Scene& scene);
 
 /// Every model's vertices alone: the geometry a light's view must cover.

@@ -61,6 +61,10 @@ struct Model {
 
 struct Scene {
   Camera camera;
+  /// false: the file has no camera and `camera` is a placeholder nobody may
+  /// use (loaded with SceneLoadOptions::require_camera false: shadow volumes
+  /// need no eye; rendering and validating do).
+  bool has_camera = true;
   Rgb ambient{0.08, 0.08, 0.08};
   std::vector<Light> lights;
   std::vector<Model> models;
@@ -68,6 +72,13 @@ struct Scene {
   /// Every file read to load it: the scene file, its mesh files and glTF
   /// external buffers and images (outputs must not overwrite any of them).
   std::vector<std::filesystem::path> inputs;
+};
+
+/// How load_scene treats optional parts of a scene file.
+struct SceneLoadOptions {
+  /// true: a scene without a camera is refused (render, validate); false:
+  /// it loads with Scene::has_camera false (umbra volume).
+  bool require_camera = true;
 };
 
 }  // namespace umbra::geometry

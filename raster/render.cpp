@@ -6,6 +6,7 @@
 #include <raster/render.h>
 #include <raster/supersample.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -19,9 +20,9 @@ int supersampling_factor(int spp) {
   throw std::invalid_argument("render: spp must be 1, 9 or 25, got " + std::to_string(spp));
 }
 
-}  // namespace
-
-Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderStats* stats) {
+/// The render before exposure: every method, supersampled.
+Frame render_linear(const geometry::Scene& scene, const RenderOptions& options,
+                    RenderStats* stats) {
   if (const int s = supersampling_factor(options.spp); s > 1) {
     geometry::Scene fine = scene;
     fine.camera.width *= s;
@@ -29,7 +30,7 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
     RenderOptions centre = options;
     centre.spp = 1;
     if (options.rows) centre.rows = RowRange{s * options.rows->begin, s * options.rows->end};
-    return downsample(render(fine, centre, stats), s);
+    return downsample(render_linear(fine, centre, stats), s);
   }
   // Before any work: a scene the float methods cannot represent is bad
   // input for them, not a render with silently wrong (or no) answers.
@@ -68,6 +69,22 @@ Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderS
       return render_ray(index, options, s);
   }
   return render_volume(index, tables, options, s);
+}
+
+}  // namespace
+
+Frame render(const geometry::Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  if (!(std::abs(options.exposure) <= kMaxExposure))
+    throw std::invalid_argument("render: exposure " + std::to_string(options.exposure) +
+                                " is not a finite number of stops within +-64");
+  Frame frame = render_linear(scene, options, stats);
+  // 0 EV is no multiplication at all: renders without an exposure stay
+  // bit-identical.
+  if (options.exposure != 0) {
+    const auto scale = static_cast<float>(std::exp2(options.exposure));
+    for (float& value : frame.beauty) value *= scale;
+  }
+  return frame;
 }
 
 }  // namespace umbra::raster

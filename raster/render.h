@@ -49,6 +49,11 @@ struct RayOptions {
   double epsilon = 1e-5;
 };
 
+/// The largest |exposure| render accepts, in stops: 2^64 scales any
+/// photometric intensity glTF carries (a 1000 W lamp is 54,351 cd, about
+/// 2^15.7) into view and keeps every finite float beauty value finite.
+inline constexpr double kMaxExposure = 64;
+
 struct RenderOptions {
   Method method = Method::volume;
   unsigned threads = 0;  ///< 0: the CPUs the process may use (util::usable_cpus)
@@ -68,6 +73,11 @@ struct RenderOptions {
   std::optional<RowRange> rows{};
   ShadowMapOptions map{};  ///< Method::map only
   RayOptions ray{};        ///< Method::ray only
+  /// Exposure in stops (EV): the beauty pass is multiplied by 2^exposure
+  /// after supersampling, before encoding; the AOVs are unchanged. 0 (the
+  /// default) leaves every value as shaded. Finite, |exposure| <=
+  /// kMaxExposure (else std::invalid_argument).
+  double exposure = 0;
 };
 
 struct RenderStats {

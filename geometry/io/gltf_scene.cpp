@@ -128,9 +128,10 @@ class SceneReader {
     return out;
   }
 
-  Camera camera() const {
-    // The lowest-index perspective camera that some node instances, placed
-    // by the first node (in traversal order) that instances it.
+  /// The lowest-index perspective camera that some node instances, placed
+  /// by the first node (in traversal order) that instances it; none:
+  /// refused when `required`, else nullopt.
+  std::optional<Camera> camera(bool required) const {
     std::map<std::size_t, Matrix> placed;
     traverse([&](std::size_t node_index, const Matrix& world) {
       const tinygltf::Node& node = model_.nodes[node_index];
@@ -146,6 +147,7 @@ class SceneReader {
       if (gltf.type != "perspective") continue;
       return make_camera(doc_, gltf, item("cameras", index), world);
     }
+    if (!required) return std::nullopt;
     fail("cameras",
          "no node of the scene instances a perspective camera; umbra renders through "
          "the first one");
@@ -389,7 +391,8 @@ bool is_gltf_path(const fs::path& file) {
   return ext == ".gltf" || ext == ".glb";
 }
 
-Scene parse_gltf_scene(std::string_view bytes, const fs::path& file) {
+Scene parse_gltf_scene(std::string_view bytes, const fs::path& file,
+                       const SceneLoadOptions& options) {
   const gltf::Document doc(bytes, file);
   const SceneReader reader(doc);
   Scene scene;
@@ -405,7 +408,10 @@ Scene parse_gltf_scene(std::string_view bytes, const fs::path& file) {
   if (scene.models.empty())
     doc.fail("meshes", "the scene instances no mesh with triangles; umbra needs at least one");
   scene.lights = reader.lights();
-  scene.camera = reader.camera();
+  if (const std::optional<Camera> camera = reader.camera(options.require_camera))
+    scene.camera = *camera;
+  else
+    scene.has_camera = false;
   scene.inputs = doc.externals();
   return scene;
 }

@@ -243,7 +243,8 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
 
 }  // namespace
 
-Scene parse_scene(std::string_view json_text, const std::filesystem::path& file) {
+Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
+                  const SceneLoadOptions& options) {
   const std::string name = file.string();
   const Json root = json::parse_located(json_text, name);
   const Fields in(file);
@@ -252,7 +253,10 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file)
 
   Scene scene;
   scene.source = file;
-  scene.camera = read_camera(in, in.required(root, "camera", ""));
+  if (root.contains("camera") || options.require_camera)
+    scene.camera = read_camera(in, in.required(root, "camera", ""));
+  else
+    scene.has_camera = false;
   if (root.contains("ambient")) scene.ambient = in.rgb(root["ambient"], "ambient");
   if (root.contains("lights")) {
     const Json& lights = in.array(root["lights"], "lights");
@@ -266,9 +270,10 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file)
   return scene;
 }
 
-Scene load_scene(const std::filesystem::path& file) {
+Scene load_scene(const std::filesystem::path& file, const SceneLoadOptions& options) {
   const std::string text = util::read_input_file(file, "scene");
-  Scene scene = is_gltf_path(file) ? parse_gltf_scene(text, file) : parse_scene(text, file);
+  Scene scene =
+      is_gltf_path(file) ? parse_gltf_scene(text, file, options) : parse_scene(text, file, options);
   scene.inputs.insert(scene.inputs.begin(), file);
   return scene;
 }

@@ -61,8 +61,9 @@ VolumeReach volume_reach(const Scene& scene, const Box& bounds, const Light& lig
   }
   reach.radius = farthest_corner(bounds, light.position) * (1 + kMargin);
   if (light.light_end) {
-    const double sphere =
-        std::max(*light.light_end, length(scene.camera.eye - light.position)) * (1 + kMargin);
+    // Far enough to hold the eye too (eye-in-shadow counts), when there is one.
+    const double eye = scene.has_camera ? length(scene.camera.eye - light.position) : 0;
+    const double sphere = std::max(*light.light_end, eye) * (1 + kMargin);
     if (sphere < reach.radius) {
       reach.radius = sphere;
       reach.limited = true;

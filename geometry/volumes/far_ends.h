@@ -16,7 +16,8 @@ namespace umbra::geometry {
 struct VolumeReach {
   /// Point lights: far ends at distance > radius from L. The radius covers
   /// the scene's bounds (eye, vertices, point lights) and, for a light with
-  /// light_end, is cut to max(light_end, |eye - L|), slightly enlarged: the
+  /// light_end, is cut to max(light_end, |eye - L|) (light_end alone in a
+  /// scene without a camera), slightly enlarged: the
   /// eye then never lies beyond a far end, and an eye ray to a sample in
   /// range stays inside the ball, so far caps are never crossed by it.
   /// Directional lights: far ends translated by more than the bounds'

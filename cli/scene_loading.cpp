@@ -1,0 +1,31 @@
+#include <cli/scene_loading.h>
+#include <geometry/io/scene_json.h>
+
+#include <fmt/format.h>
+
+#include <cstdio>
+
+namespace umbra::cli {
+
+geometry::Scene load_verb_scene(const std::filesystem::path& file,
+                                const geometry::SceneLoadOptions& options) {
+  geometry::Scene scene = geometry::load_scene(file, options);
+  if (scene.lights.empty())
+    fmt::print(stderr,
+               "umbra: warning: {}: the scene has no lights; only ambient light, no shadow "
+               "anywhere\n",
+               file.string());
+  return scene;
+}
+
+std::string describe_light(const geometry::Light& light) {
+  if (light.type == geometry::LightType::directional)
+    return fmt::format("directional toward ({}, {}, {})", light.direction.x, light.direction.y,
+                       light.direction.z);
+  std::string text =
+      fmt::format("point at ({}, {}, {})", light.position.x, light.position.y, light.position.z);
+  if (light.light_end) text += fmt::format(", light_end {}", *light.light_end);
+  return text;
+}
+
+}  // namespace umbra::cli
