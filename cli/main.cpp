@@ -9,6 +9,7 @@
 #include <cli/render_command.h>
 #include <cli/validate_command.h>
 #include <cli/verb_runner.h>
+#include <cli/version_text.h>
 #include <cli/volume_command.h>
 
 #include <fmt/format.h>
@@ -70,8 +71,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "fuzz") return run_fuzz_program(argc, argv);
   install_signal_handlers();
   CLI::App app{"umbra: exact shadow volumes, rendered and proved right", "umbra"};
-  app.set_version_flag("--version", std::string("umbra ") + UMBRA_VERSION,
-                       "Print the version and exit");
+  app.set_version_flag("--version", version_text(UMBRA_VERSION),
+                       "Print umbra's version and those of the libraries it uses, and exit");
   app.require_subcommand(1);
   app.footer(kFooter);
   // --help shows every option's default (verbs inherit this when added).

@@ -1,5 +1,6 @@
 #include <raster/exr_layout.h>
 #include <raster/image_io.h>
+#include <raster/library_versions.h>
 #include <raster/shading.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
@@ -345,6 +346,21 @@ void write_rgb_png(const fs::path& path, int width, int height, const std::vecto
   write_atomically(path, spec, [&](OIIO::ImageOutput& out) {
     return out.write_image(spec.format, bytes.data());
   });
+}
+
+}  // namespace umbra::raster
+
+namespace umbra::raster {
+
+geometry::LibraryVersion openimageio_version() {
+  // openimageio_version() is MMmmpp in decimal digits (20407: 2.4.7).
+  const int v = OIIO::openimageio_version();
+  // Both from the same encoding: OIIO_VERSION_STRING carries a fourth,
+  // tweak component (2.4.7.1) that the library's number does not.
+  const auto text = [](int x) {
+    return fmt::format("{}.{}.{}", x / 10000, x / 100 % 100, x % 100);
+  };
+  return {"OpenImageIO", text(OIIO_VERSION), text(v)};
 }
 
 }  // namespace umbra::raster

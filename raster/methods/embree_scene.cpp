@@ -1,3 +1,4 @@
+#include <raster/library_versions.h>
 #include <raster/methods/embree_scene.h>
 #include <util/parallel_for.h>
 
@@ -128,6 +129,16 @@ void EmbreeScene::release() {
   if (device_) rtcReleaseDevice(device_);
   casters_ = visible_ = nullptr;
   device_ = nullptr;
+}
+
+}  // namespace umbra::raster
+
+namespace umbra::raster {
+
+geometry::LibraryVersion embree_version() {
+  // The loaded library's version needs a device; its headers' is enough
+  // here (Debian's embree3 package pins the two together).
+  return {"Embree", RTC_VERSION_STRING, ""};
 }
 
 }  // namespace umbra::raster

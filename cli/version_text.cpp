@@ -1,0 +1,34 @@
+#include <CLI/CLI.hpp>
+#include <cli/version_text.h>
+#include <geometry/library_versions.h>
+#include <raster/library_versions.h>
+
+#include <fmt/format.h>
+#include <oneapi/tbb/version.h>
+
+#include <vector>
+
+namespace umbra::cli {
+
+std::string version_text(const std::string& umbra_version) {
+  std::vector<geometry::LibraryVersion> libraries = geometry::geometry_library_versions();
+  for (geometry::LibraryVersion& v : raster::raster_library_versions())
+    libraries.push_back(std::move(v));
+  libraries.push_back({"oneTBB", TBB_VERSION_STRING, TBB_runtime_version()});
+  libraries.push_back({"CLI11", CLI11_VERSION, ""});  // header-only
+  libraries.push_back(
+      {"fmt",
+       fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100),
+       ""});
+  std::string text = "umbra " + umbra_version;
+  for (const geometry::LibraryVersion& v : libraries) {
+    // The version running, and the headers' when they differ.
+    if (v.runs.empty() || v.runs == v.built)
+      text += fmt::format("\n{} {}", v.name, v.built);
+    else
+      text += fmt::format("\n{} {}, built with {}", v.name, v.runs, v.built);
+  }
+  return text;
+}
+
+}  // namespace umbra::cli

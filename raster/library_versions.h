@@ -1,0 +1,20 @@
+#pragma once
+// The versions of the libraries umbra::raster is built with and runs with
+// (`umbra --version`). OpenImageIO is queried behind the image I/O file and
+// Embree behind raster/methods/, as everything else that includes them.
+#include <geometry/library_versions.h>
+
+#include <vector>
+
+namespace umbra::raster {
+
+/// OpenImageIO (raster/image_io.cpp).
+geometry::LibraryVersion openimageio_version();
+
+/// Embree (raster/methods/embree_scene.cpp).
+geometry::LibraryVersion embree_version();
+
+/// OpenImageIO and Embree, in that order.
+std::vector<geometry::LibraryVersion> raster_library_versions();
+
+}  // namespace umbra::raster
