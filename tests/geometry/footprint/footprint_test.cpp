@@ -163,6 +163,113 @@ TEST(Footprint, LShapedReceiverTakesTheShadowItHas) {
   EXPECT_EQ(area_of(f, 0, FootprintClass::lit), 9);
 }
 
+TEST(Footprint, ReceiverWithAHoleTakesTheShadowAroundIt) {
+  // A frame: [-3,3]² minus the hole [-1,1]², as one mesh of four quads
+  // (left, right, front, back strips), under the square [-1,1]² at y = 1
+  // lit from (0, 2, 0): the shadow [-2,2]² falls on the frame around the
+  // hole and nowhere in it.
+  Model frame;
+  frame.name = "frame";
+  const auto quad = [&](double x0, double x1, double z0, double z1) {
+    const auto first = static_cast<std::uint32_t>(frame.vertices.size());
+    frame.vertices.insert(frame.vertices.end(),
+                          {{x0, 0, z0}, {x0, 0, z1}, {x1, 0, z1}, {x1, 0, z0}});
+    frame.polygons.push_back({first, first + 1, first + 2, first + 3});
+  };
+  quad(-3, -1, -3, 3);  // left
+  quad(1, 3, -3, 3);    // right
+  quad(-1, 1, 1, 3);    // front
+  quad(-1, 1, -3, -1);  // back
+  Scene s;
+  s.models = {frame, occluder()};
+  s.lights = {point_light({0, 2, 0})};
+  const Footprints f = compute_footprints(s);
+
+  std::vector<const FootprintRegion*> shadowed(4), lit(4);
+  for (const FootprintRegion& r : f.regions) {
+    if (r.model != 0) continue;
+    auto& slot = (r.cls == FootprintClass::shadowed ? shadowed : lit)[r.polygon];
+    ASSERT_EQ(slot, nullptr) << "polygon " << r.polygon << " has one region of each class";
+    slot = &r;
+  }
+  for (int p = 0; p < 4; ++p) ASSERT_TRUE(shadowed[p] && lit[p]) << "polygon " << p;
+  EXPECT_EQ(vertex_set(*shadowed[0]), (Points{{-2, 0, -2}, {-2, 0, 2}, {-1, 0, 2}, {-1, 0, -2}}));
+  EXPECT_EQ(vertex_set(*shadowed[1]), (Points{{1, 0, -2}, {1, 0, 2}, {2, 0, 2}, {2, 0, -2}}));
+  EXPECT_EQ(vertex_set(*shadowed[2]), (Points{{-1, 0, 1}, {-1, 0, 2}, {1, 0, 2}, {1, 0, 1}}));
+  EXPECT_EQ(vertex_set(*shadowed[3]), (Points{{-1, 0, -2}, {-1, 0, -1}, {1, 0, -1}, {1, 0, -2}}));
+  // The left strip's lit part: the strip less a notch in its inner side, a
+  // simple non-convex octagon.
+  EXPECT_EQ(vertex_set(*lit[0]), (Points{{-3, 0, -3},
+                                         {-3, 0, 3},
+                                         {-1, 0, 3},
+                                         {-1, 0, 2},
+                                         {-2, 0, 2},
+                                         {-2, 0, -2},
+                                         {-1, 0, -2},
+                                         {-1, 0, -3}}));
+  EXPECT_EQ(lit[0]->area, 8);
+  EXPECT_EQ(vertex_set(*lit[2]), (Points{{-1, 0, 2}, {-1, 0, 3}, {1, 0, 3}, {1, 0, 2}}));
+  for (const FootprintRegion* r : lit) EXPECT_GT(signed_area_xz_from_above(*r), 0);
+  for (const FootprintRegion* r : shadowed) EXPECT_GT(signed_area_xz_from_above(*r), 0);
+  EXPECT_EQ(area_of(f, 0, FootprintClass::shadowed), 12);
+  EXPECT_EQ(area_of(f, 0, FootprintClass::lit), 20);
+  const double areas[] = {12, 12, 4, 4}, shadow[] = {4, 4, 2, 2};
+  for (std::uint32_t p = 0; p < 4; ++p) {
+    EXPECT_EQ(f.receivers[p].polygon, p);
+    EXPECT_EQ(f.receivers[p].area, areas[p]);
+    EXPECT_EQ(f.receivers[p].shadowed_area, shadow[p]);
+    EXPECT_EQ(f.receivers[p].sunlit_fraction, (areas[p] - shadow[p]) / areas[p]);
+  }
+}
+
+TEST(Footprint, OpenBoxShadowsHalfItsFloorUnderASunAt45Degrees) {
+  // A box [0,2]² × [0,1] without its lid, every face counter-clockwise
+  // seen from inside, under a directional light along (1, -1, 0): the west
+  // wall's shadow covers the floor for x < 1; the south and north walls
+  // hold the light's direction in their planes (facing 0, whole, no light
+  // arrives); the west wall faces away from the light and the east wall,
+  // lit whole, towards it.
+  Model box;
+  box.name = "box";
+  box.vertices = {{0, 0, 0}, {0, 0, 2}, {2, 0, 2}, {2, 0, 0},   // floor
+                  {0, 1, 0}, {0, 1, 2}, {2, 1, 2}, {2, 1, 0}};  // the rim above each
+  box.polygons = {{0, 1, 2, 3},                                 // floor, +y
+                  {0, 4, 5, 1},                                 // west, +x
+                  {3, 2, 6, 7},                                 // east, -x
+                  {0, 3, 7, 4},                                 // south, +z
+                  {1, 5, 6, 2}};                                // north, -z
+  Scene s;
+  s.models = {box};
+  s.lights = {directional_light({1, -1, 0})};
+  const Footprints f = compute_footprints(s);
+
+  std::vector<const FootprintRegion*> floor_shadowed, floor_lit;
+  for (const FootprintRegion& r : f.regions)
+    if (r.polygon == 0)
+      (r.cls == FootprintClass::shadowed ? floor_shadowed : floor_lit).push_back(&r);
+  ASSERT_EQ(floor_shadowed.size(), 1u);
+  ASSERT_EQ(floor_lit.size(), 1u);
+  EXPECT_EQ(vertex_set(*floor_shadowed[0]), (Points{{0, 0, 0}, {0, 0, 2}, {1, 0, 2}, {1, 0, 0}}));
+  EXPECT_EQ(vertex_set(*floor_lit[0]), (Points{{1, 0, 0}, {1, 0, 2}, {2, 0, 2}, {2, 0, 0}}));
+
+  ASSERT_EQ(f.receivers.size(), 5u);
+  const std::int32_t facing[] = {1, -1, 1, 0, 0};
+  const double lit[] = {2, 2, 2, 0, 0}, sunlit[] = {0.5, 0, 1, 0, 0};
+  for (std::uint32_t p = 0; p < 5; ++p) {
+    EXPECT_EQ(f.receivers[p].polygon, p);
+    EXPECT_EQ(f.receivers[p].facing, facing[p]) << "polygon " << p;
+    EXPECT_EQ(f.receivers[p].area, p == 0 ? 4 : 2) << "polygon " << p;
+    EXPECT_EQ(f.receivers[p].lit_area, lit[p]) << "polygon " << p;
+    EXPECT_EQ(f.receivers[p].sunlit_fraction, sunlit[p]) << "polygon " << p;
+  }
+  // Every wall is one region: nothing in the box shadows a wall.
+  for (std::uint32_t p = 1; p < 5; ++p)
+    EXPECT_EQ(std::count_if(f.regions.begin(), f.regions.end(),
+                            [&](const FootprintRegion& r) { return r.polygon == p; }),
+              1)
+        << "polygon " << p;
+}
+
 TEST(Footprint, TwistedQuadShadowsByParity) {
   // A bow-tie at y = 1: its surface is the two triangles left and right of
   // its crossing at (1, 1), and so is its shadow straight down.
