@@ -2,6 +2,7 @@
 #include <cli/footprint_command.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
+#include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <geometry/export/footprint_export.h>
 #include <geometry/footprint/footprint.h>
@@ -58,7 +59,7 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
                   "partition runs on one for now); the output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
-  cmd->add_flag("-q,--quiet", args.quiet, "Print nothing on success");
+  add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
       "  umbra footprint data/scenes/default.json -o out/default.footprint.ply --csv "
@@ -145,6 +146,29 @@ int run_footprint(const FootprintArgs& args) {
                     {"write", seconds_write},
                     {"total", util::seconds_since(start)}};
     emit_json(j, args.stats_json);
+  }
+  if (args.verbose) {
+    for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
+      std::uint64_t regions = 0;
+      for (const geometry::FootprintRegion& r : footprints.regions) regions += r.light == l;
+      double area = 0, shadowed = 0;
+      std::uint64_t polygons = 0;
+      for (const geometry::ReceiverSummary& r : footprints.receivers) {
+        if (r.light != l) continue;
+        ++polygons;
+        area += r.area;
+        shadowed += r.shadowed_area;
+      }
+      if (polygons == 0) continue;  // not chosen by --lights
+      fmt::print(stderr,
+                 "light {}: {}: {} regions on {} receiver polygons, shadowed {:.6g} of {:.6g}\n", l,
+                 describe_light(scene.lights[l]), regions, polygons, shadowed, area);
+    }
+    fmt::print(
+        stderr,
+        "seconds: load {:.3f}, volumes {:.3f}, partition {:.3f}, write {:.3f}, total {:.3f}\n",
+        seconds_load, s.seconds_volumes, s.seconds_partition, seconds_write,
+        util::seconds_since(start));
   }
   if (!args.quiet) {
     std::FILE* stream = stats_to_stdout ? stderr : stdout;

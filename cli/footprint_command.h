@@ -1,5 +1,5 @@
 #pragma once
-// `umbra footprint SCENE -o OUT.ply|.csv [--csv FILE] [--receivers NAME,...]`
+// `umbra footprint SCENE -o OUT.ply|.obj|.csv [--csv FILE] [--receivers NAME,...] [-v|-q]`
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -16,6 +16,7 @@ struct FootprintArgs {
   bool ignore_light_end = false;
   std::string stats_json;  ///< empty: none; "-": stdout
   bool quiet = false;
+  bool verbose = false;  ///< -v: a line per light and the times per phase on stderr
   unsigned threads = 0;
 };
 
