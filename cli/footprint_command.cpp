@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 
 namespace umbra::cli {
 
@@ -148,21 +149,24 @@ int run_footprint(const FootprintArgs& args) {
     emit_json(j, args.stats_json);
   }
   if (args.verbose) {
-    for (std::uint32_t l = 0; l < scene.lights.size(); ++l) {
-      std::uint64_t regions = 0;
-      for (const geometry::FootprintRegion& r : footprints.regions) regions += r.light == l;
+    struct PerLight {
+      std::uint64_t regions = 0, polygons = 0;
       double area = 0, shadowed = 0;
-      std::uint64_t polygons = 0;
-      for (const geometry::ReceiverSummary& r : footprints.receivers) {
-        if (r.light != l) continue;
-        ++polygons;
-        area += r.area;
-        shadowed += r.shadowed_area;
-      }
-      if (polygons == 0) continue;  // not chosen by --lights
+    };
+    std::vector<PerLight> per_light(scene.lights.size());
+    for (const geometry::FootprintRegion& r : footprints.regions) ++per_light[r.light].regions;
+    for (const geometry::ReceiverSummary& r : footprints.receivers) {
+      PerLight& p = per_light[r.light];
+      ++p.polygons;
+      p.area += r.area;
+      p.shadowed += r.shadowed_area;
+    }
+    for (std::size_t l = 0; l < per_light.size(); ++l) {
+      const PerLight& p = per_light[l];
+      if (p.polygons == 0) continue;  // not chosen by --lights
       fmt::print(stderr,
                  "light {}: {}: {} regions on {} receiver polygons, shadowed {:.6g} of {:.6g}\n", l,
-                 describe_light(scene.lights[l]), regions, polygons, shadowed, area);
+                 describe_light(scene.lights[l]), p.regions, p.polygons, p.shadowed, p.area);
     }
     fmt::print(
         stderr,

@@ -71,8 +71,9 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "fuzz") return run_fuzz_program(argc, argv);
   install_signal_handlers();
   CLI::App app{"umbra: exact shadow volumes, rendered and proved right", "umbra"};
-  app.set_version_flag("--version", version_text(UMBRA_VERSION),
-                       "Print umbra's version and those of the libraries it uses, and exit");
+  app.set_version_flag(
+      "--version", [] { return version_text(UMBRA_VERSION); },
+      "Print umbra's version and those of the libraries it uses, and exit");
   app.require_subcommand(1);
   app.footer(kFooter);
   // --help shows every option's default (verbs inherit this when added).

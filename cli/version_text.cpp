@@ -12,14 +12,11 @@ namespace umbra::cli {
 
 std::string version_text(const std::string& umbra_version) {
   std::vector<geometry::LibraryVersion> libraries = geometry::geometry_library_versions();
-  for (geometry::LibraryVersion& v : raster::raster_library_versions())
-    libraries.push_back(std::move(v));
+  libraries.push_back(raster::openimageio_version());
+  libraries.push_back(raster::embree_version());
   libraries.push_back({"oneTBB", TBB_VERSION_STRING, TBB_runtime_version()});
   libraries.push_back({"CLI11", CLI11_VERSION, ""});  // header-only
-  libraries.push_back(
-      {"fmt",
-       fmt::format("{}.{}.{}", FMT_VERSION / 10000, FMT_VERSION / 100 % 100, FMT_VERSION % 100),
-       ""});
+  libraries.push_back({"fmt", geometry::decimal_packed_version(FMT_VERSION), ""});
   std::string text = "umbra " + umbra_version;
   for (const geometry::LibraryVersion& v : libraries) {
     // The version running, and the headers' when they differ.

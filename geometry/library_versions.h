@@ -16,4 +16,11 @@ struct LibraryVersion {
 /// CGAL, GMP, MPFR, OpenMesh and nlohmann_json, in that order.
 std::vector<LibraryVersion> geometry_library_versions();
 
+/// "major.minor.patch".
+std::string dotted_version(int major, int minor, int patch);
+
+/// A version packed in decimal digits as major·10000 + minor·100 + patch,
+/// as fmt's FMT_VERSION and OpenImageIO's numbers are (20407: "2.4.7").
+std::string decimal_packed_version(int packed);
+
 }  // namespace umbra::geometry

@@ -353,14 +353,10 @@ void write_rgb_png(const fs::path& path, int width, int height, const std::vecto
 namespace umbra::raster {
 
 geometry::LibraryVersion openimageio_version() {
-  // openimageio_version() is MMmmpp in decimal digits (20407: 2.4.7).
-  const int v = OIIO::openimageio_version();
-  // Both from the same encoding: OIIO_VERSION_STRING carries a fourth,
-  // tweak component (2.4.7.1) that the library's number does not.
-  const auto text = [](int x) {
-    return fmt::format("{}.{}.{}", x / 10000, x / 100 % 100, x % 100);
-  };
-  return {"OpenImageIO", text(OIIO_VERSION), text(v)};
+  // Both from the same packed number: OIIO_VERSION_STRING carries a
+  // fourth, tweak component (2.4.7.1) that the library's number does not.
+  return {"OpenImageIO", geometry::decimal_packed_version(OIIO_VERSION),
+          geometry::decimal_packed_version(OIIO::openimageio_version())};
 }
 
 }  // namespace umbra::raster

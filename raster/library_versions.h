@@ -4,8 +4,6 @@
 // Embree behind raster/methods/, as everything else that includes them.
 #include <geometry/library_versions.h>
 
-#include <vector>
-
 namespace umbra::raster {
 
 /// OpenImageIO (raster/image_io.cpp).
@@ -13,8 +11,5 @@ geometry::LibraryVersion openimageio_version();
 
 /// Embree (raster/methods/embree_scene.cpp).
 geometry::LibraryVersion embree_version();
-
-/// OpenImageIO and Embree, in that order.
-std::vector<geometry::LibraryVersion> raster_library_versions();
 
 }  // namespace umbra::raster
