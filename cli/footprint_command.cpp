@@ -16,7 +16,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace umbra::cli {
@@ -33,7 +35,9 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
          "-o,--output", args.output,
          "Output: .ply (one face per region with light, model, polygon, triangle, "
          "class, facing), .obj (faces grouped by light and class as g/usemtl light<L>_lit and "
-         "light<L>_shadowed, materials in the sidecar <stem>.mtl) or .csv (one row per "
+         "light<L>_shadowed, materials in the sidecar <stem>.mtl), .gltf/.glb (the regions "
+         "triangulated, a node, mesh and material per light and class, named as the OBJ "
+         "groups) or .csv (one row per "
          "light and receiver polygon); default "
          "<scene stem>.footprint.ply in the current directory")
       ->check(non_empty_path())
@@ -79,7 +83,7 @@ int run_footprint(const FootprintArgs& args) {
                               : fs::path(args.output);
   const bool stats_to_stdout = args.stats_json == "-";
 
-  check_output_path(output, {".ply", ".obj", ".csv"});
+  check_output_path(output, {".ply", ".obj", ".gltf", ".glb", ".csv"});
   std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
   const auto sidecar = geometry::footprint_sidecar_path(output);
   if (sidecar) {
@@ -175,12 +179,20 @@ int run_footprint(const FootprintArgs& args) {
         util::seconds_since(start));
   }
   if (!args.quiet) {
+    // The lights used (--lights may choose some): receivers are counted once
+    // each, not once per light.
+    std::set<std::uint32_t> lights_used;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> polygons;
+    for (const geometry::ReceiverSummary& r : footprints.receivers) {
+      lights_used.insert(r.light);
+      polygons.insert({r.model, r.polygon});
+    }
     std::FILE* stream = stats_to_stdout ? stderr : stdout;
-    fmt::print(stream, "wrote {}{}{}: {} regions on {} receiver polygons, {} lights, {:.2f} s\n",
+    fmt::print(stream, "wrote {}{}{}: {} regions on {} receiver polygons, {} {}, {:.2f} s\n",
                output.string(), sidecar ? " + " + sidecar->filename().string() : std::string(),
-               args.csv.empty() ? std::string() : " + " + args.csv, s.regions,
-               footprints.receivers.size() / std::max<std::size_t>(1, scene.lights.size()),
-               scene.lights.size(), util::seconds_since(start));
+               args.csv.empty() ? std::string() : " + " + args.csv, s.regions, polygons.size(),
+               lights_used.size(), lights_used.size() == 1 ? "light" : "lights",
+               util::seconds_since(start));
   }
   return kExitSuccess;
 }

@@ -96,7 +96,9 @@ int main(int argc, char** argv) {
   if (const auto exit_code = parse_command_line(app, argc, argv, "umbra")) return *exit_code;
   return run_verb([&] {
     if (render->parsed()) return run_render(render_args);
-    if (validate->parsed()) return run_validate(validate_args);
+    if (validate->parsed())
+      return validate_args.footprint.empty() ? run_validate(validate_args)
+                                             : run_validate_footprint(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
     if (footprint->parsed()) return run_footprint(footprint_args);
     if (merge->parsed()) return run_merge(merge_args);

@@ -75,15 +75,29 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
   cmd->add_option("SCENE", args.scene, "Scene file the image was rendered from")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--image", args.image, "EXR written by `umbra render -o NAME.exr`")
-      ->required()
-      ->check(CLI::ExistingFile)
-      ->type_name("RENDER.exr");
-  cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed")
-      ->check(positive_integer())
-      ->default_str("all")
-      ->type_name("N");
-  cmd->add_option("--seed", args.seed, "Seed for --samples")->check(unsigned_64())->type_name("S");
+  CLI::Option* image =
+      cmd->add_option("--image", args.image, "EXR written by `umbra render -o NAME.exr`")
+          ->check(CLI::ExistingFile)
+          ->type_name("RENDER.exr");
+  CLI::Option* footprint =
+      cmd->add_option("--footprint", args.footprint,
+                      "Check a footprint (`umbra footprint -o NAME.ply`, or another tool's in "
+                      "that layout) instead of a render: classes, areas, overlaps")
+          ->check(CLI::ExistingFile)
+          ->excludes(image)
+          ->type_name("FOOTPRINT.ply");
+  cmd->add_flag("--ignore-light-end", args.ignore_light_end,
+                "With --footprint: lights with light_end count as unlimited, as "
+                "`umbra footprint --ignore-light-end` made them")
+      ->needs(footprint);
+  CLI::Option* samples =
+      cmd->add_option("--samples", args.samples, "Check N pixels drawn with the seed")
+          ->check(positive_integer())
+          ->default_str("all")
+          ->type_name("N");
+  CLI::Option* seed = cmd->add_option("--seed", args.seed, "Seed for --samples")
+                          ->check(unsigned_64())
+                          ->type_name("S");
   cmd->add_flag("--json", args.json, "Print the report as JSON on stdout instead of text");
   CLI::Option* mask =
       cmd->add_option("--mask", args.mask,
@@ -91,8 +105,14 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
                       "dark grey agree, yellow boundary, red mismatch, black not checked")
           ->check(non_empty_path())
           ->type_name("MASK.png");
-  cmd->add_flag("--no-mask", args.no_mask, "Write no mask image (the JSON report's mask is null)")
-      ->excludes(mask);
+  CLI::Option* no_mask = cmd->add_flag("--no-mask", args.no_mask,
+                                       "Write no mask image (the JSON report's mask is null)")
+                             ->excludes(mask);
+  for (CLI::Option* o : {samples, seed, mask, no_mask}) o->excludes(footprint);
+  cmd->callback([&args] {
+    if (args.image.empty() && args.footprint.empty())
+      throw CLI::RequiredError("--image or --footprint");
+  });
   cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())
       ->type_name("N");
@@ -106,7 +126,10 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args) {
       "Example:\n"
       "  umbra render data/scenes/default.json -o out/default.exr\n"
       "  umbra validate data/scenes/default.json --image out/default.exr --samples 20000\n"
-      "Exit code 1 when any non-boundary sample disagrees with the oracle.");
+      "  umbra footprint data/scenes/open.json -o out/open.ply\n"
+      "  umbra validate data/scenes/open.json --footprint out/open.ply\n"
+      "Exit code 1 when any non-boundary sample disagrees with the oracle, or when a\n"
+      "footprint fails a check.");
   return cmd;
 }
 

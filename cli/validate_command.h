@@ -1,6 +1,7 @@
 #pragma once
 // `umbra validate SCENE --image RENDER.exr [--samples N] [--seed S] [--json]
 //                       [--mask MASK.png | --no-mask] [--threads N] [--quiet]`
+// `umbra validate SCENE --footprint FOOTPRINT.ply [--ignore-light-end] [--json]`
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
@@ -11,7 +12,9 @@ namespace umbra::cli {
 struct ValidateArgs {
   std::string scene;
   std::string image;
-  std::uint64_t samples = 0;  ///< 0: every pixel
+  std::string footprint;          ///< --footprint: check a footprint file instead of a render
+  bool ignore_light_end = false;  ///< with --footprint, as `umbra footprint --ignore-light-end`
+  std::uint64_t samples = 0;      ///< 0: every pixel
   std::uint64_t seed = 1;
   bool json = false;
   std::string mask;      ///< empty: <image stem>.mismatches.png beside the image
@@ -31,5 +34,10 @@ CLI::App* add_validate_command(CLI::App& app, ValidateArgs& args);
 /// non-boundary sample disagrees, else kExitSuccess; throws
 /// util::InputError on bad input (before any output file is written).
 int run_validate(const ValidateArgs& args);
+
+/// `--footprint`: checks the footprint file against the exact oracle
+/// (geometry/footprint/footprint_check.h) and prints the report. Returns
+/// kExitMismatches on any failure, else kExitSuccess.
+int run_validate_footprint(const ValidateArgs& args);
 
 }  // namespace umbra::cli

@@ -2,6 +2,7 @@
 // OBJ numbers come from mesh_text.h for the reason given in
 // volume_export.cpp: double positions that read back bit-identical.
 #include <geometry/export/footprint_export.h>
+#include <geometry/export/footprint_gltf.h>
 #include <geometry/export/indexed_faces.h>
 #include <geometry/export/mesh_text.h>
 #include <geometry/io/mesh_lexer.h>
@@ -44,11 +45,6 @@ std::string ply_text(const Footprints& f) {
 
 bool is_lit(const FootprintRegion& r) { return r.cls == FootprintClass::lit; }
 
-/// "light<L>_lit" or "light<L>_shadowed": the OBJ group and material names.
-std::string group_name(std::uint32_t light, bool lit) {
-  return "light" + std::to_string(light) + (lit ? "_lit" : "_shadowed");
-}
-
 /// Region indices by light, lit before shadowed, otherwise in the order of
 /// Footprints::regions (stable), so each (light, class) is one run of faces.
 std::vector<std::size_t> obj_order(const Footprints& f) {
@@ -85,7 +81,7 @@ std::string grouped_obj_text(const Footprints& f, const fs::path& mtl) {
   std::string current;
   for (std::size_t i = 0; i < indexed.faces.size(); ++i) {
     const FootprintRegion& r = f.regions[order[i]];
-    const std::string group = group_name(r.light, is_lit(r));
+    const std::string group = detail::footprint_group_name(r.light, is_lit(r));
     if (group != current) {
       out += "g " + group + "\nusemtl " + group + "\n";
       current = group;
@@ -104,7 +100,7 @@ std::string mtl_text(const Footprints& f) {
   std::string previous;
   for (const std::size_t i : obj_order(f)) {
     const FootprintRegion& r = f.regions[i];
-    const std::string name = group_name(r.light, is_lit(r));
+    const std::string name = detail::footprint_group_name(r.light, is_lit(r));
     if (name == previous) continue;
     previous = name;
     out += "\nnewmtl " + name + "\n";
@@ -145,7 +141,7 @@ std::string footprint_csv(const Footprints& f, const Scene& scene) {
 
 std::optional<fs::path> footprint_sidecar_path(const fs::path& path) {
   const std::string ext = detail::to_lower(path.extension().string());
-  if (ext == ".ply" || ext == ".csv") return std::nullopt;
+  if (ext == ".ply" || ext == ".csv" || ext == ".gltf" || ext == ".glb") return std::nullopt;
   if (ext == ".obj") {
     const std::string name = path.filename().string();
     if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }))
@@ -154,9 +150,9 @@ std::optional<fs::path> footprint_sidecar_path(const fs::path& path) {
                              "names the .mtl sidecar");
     return fs::path(path).replace_extension(".mtl");
   }
-  throw util::InputError(
-      path.string(),
-      "unknown footprint extension '" + path.extension().string() + "'; use .ply, .obj or .csv");
+  throw util::InputError(path.string(), "unknown footprint extension '" +
+                                            path.extension().string() +
+                                            "'; use .ply, .obj, .gltf, .glb or .csv");
 }
 
 std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& footprints,
@@ -170,12 +166,15 @@ std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& 
     const fs::path mtl = *footprint_sidecar_path(path);
     files.emplace_back(path, grouped_obj_text(footprints, mtl));
     files.emplace_back(mtl, mtl_text(footprints));
+  } else if (ext == ".gltf" || ext == ".glb") {
+    files.emplace_back(path,
+                       detail::gltf_footprint_bytes(footprints, ext == ".glb", path.string()));
   } else if (ext == ".csv") {
     files.emplace_back(path, footprint_csv(footprints, scene));
   } else {
-    throw util::InputError(
-        path.string(),
-        "unknown footprint extension '" + path.extension().string() + "'; use .ply, .obj or .csv");
+    throw util::InputError(path.string(), "unknown footprint extension '" +
+                                              path.extension().string() +
+                                              "'; use .ply, .obj, .gltf, .glb or .csv");
   }
   return files;
 }

@@ -27,6 +27,10 @@ namespace umbra::geometry {
 ///   `mtllib <stem>.mtl` naming the sidecar (footprint_sidecar_path), one
 ///   material per group: lit warm white, shadowed dark blue. The file name
 ///   must hold no whitespace (the `mtllib` line could not name its sidecar).
+/// - `.gltf` / `.glb`: the same regions triangulated, float32 positions,
+///   one node, mesh and material per (light, class) named as the OBJ
+///   groups, the attributes as float vertex attributes (_REGION, _LIGHT,
+///   _MODEL, _POLYGON, _TRIANGLE, _CLASS, _FACING; footprint_gltf.h).
 /// - `.csv`: one row per (light, receiving model, polygon): light, model,
 ///   model_name, polygon, facing, area, lit_area, shadowed_area,
 ///   sunlit_fraction, with shortest round-trip doubles.
@@ -45,10 +49,10 @@ std::vector<std::pair<std::filesystem::path, std::string>> footprint_files(
 
 /// The extensions write_footprints accepts, for checking an output path
 /// before any work.
-inline constexpr const char* kFootprintExtensions[] = {".ply", ".obj", ".csv"};
+inline constexpr const char* kFootprintExtensions[] = {".ply", ".obj", ".gltf", ".glb", ".csv"};
 
 /// The sidecar write_footprints writes beside `path`: `<stem>.mtl` in the
-/// same directory for `.obj`; nothing for `.ply` and `.csv`. Throws
+/// same directory for `.obj`; nothing for the other formats. Throws
 /// InputError naming `path` for an unknown extension.
 std::optional<std::filesystem::path> footprint_sidecar_path(const std::filesystem::path& path);
 

@@ -3,6 +3,7 @@
 #include <geometry/footprint/light_query.h>
 #include <geometry/footprint/receiver_partition.h>
 #include <geometry/footprint/receiver_plane.h>
+#include <geometry/footprint/receiver_units.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/contour.h>
@@ -48,51 +49,6 @@ LightSides light_sides(const Scene& scene, const ShadowVolumes& volumes, std::ui
   return sides;
 }
 
-/// The pieces of one receiving polygon for one light: the polygon itself
-/// when planar, else each fan triangle.
-struct Unit {
-  std::int32_t triangle = -1;
-  std::vector<Vec3> vertices;
-  std::vector<std::array<std::uint32_t, 3>> fan;
-};
-
-std::vector<Unit> units_of(const Model& model, const Polygon& polygon,
-                           const PolygonSurface& surface) {
-  std::vector<Unit> units;
-  if (surface.shape == PolygonShape::degenerate) return units;
-  if (surface.shape == PolygonShape::planar) {
-    Unit u;
-    for (std::uint32_t v : polygon) u.vertices.push_back(model.vertices[v]);
-    for (const FanTriangle& t : surface.triangles) u.fan.push_back(t.local);
-    units.push_back(std::move(u));
-    return units;
-  }
-  for (const FanTriangle& t : surface.triangles) {
-    Unit u;
-    u.triangle = static_cast<std::int32_t>(t.local[1]) - 1;
-    for (std::uint32_t l : t.local) u.vertices.push_back(model.vertices[polygon[l]]);
-    u.fan.push_back({0, 1, 2});
-    units.push_back(std::move(u));
-  }
-  return units;
-}
-
-/// The receiver's plane, oriented so that its front is the polygon's: the
-/// first fan triangle's plane, turned over when the polygon's outline runs
-/// clockwise in it.
-ReceiverPlane plane_of(const Unit& u) {
-  const auto& t = u.fan.front();
-  ReceiverPlane plane(u.vertices[t[0]], u.vertices[t[1]], u.vertices[t[2]]);
-  FT twice;
-  const std::size_t n = u.vertices.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point2 a = plane.project(u.vertices[i]), b = plane.project(u.vertices[(i + 1) % n]);
-    twice += a.x() * b.y() - a.y() * b.x();
-  }
-  if (CGAL::is_negative(twice)) return {u.vertices[t[0]], u.vertices[t[2]], u.vertices[t[1]]};
-  return plane;
-}
-
 struct PolygonResult {
   std::vector<FootprintRegion> regions;
   ReceiverSummary summary;
@@ -113,13 +69,15 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
   const HPoint lp = light_point(ctx.scene.lights[light]);
   PolygonResult result;
   result.summary = {light, model_index, polygon_index};
-  FT lit_total, shadowed_total, front_lit;  // 3D areas are these times sqrt(scale²): per unit
+  FT lit_total = 0, shadowed_total = 0,
+     front_lit = 0;  // 3D areas are these times sqrt(scale²): per unit
   double area = 0, lit_area = 0, shadowed_area = 0, front_lit_area = 0;
   std::optional<std::int32_t> common_facing;
   std::vector<std::uint32_t> candidates, scratch;
-  for (const Unit& unit : units_of(model, polygon, ctx.surfaces[model_index][polygon_index])) {
+  for (const ReceiverUnit& unit :
+       receiver_units(model, polygon, ctx.surfaces[model_index][polygon_index])) {
     ++result.units;
-    const ReceiverPlane plane = plane_of(unit);
+    const ReceiverPlane plane = receiver_unit_plane(unit);
     // +1: the light on the side the receiver's normal points to, its front.
     const std::int32_t facing = static_cast<std::int32_t>(plane.side(lp));
     if (!common_facing)
@@ -185,7 +143,7 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
     result.faces += counts.classified_faces;
 
     const FT scale2 = plane.area_scale_squared();
-    FT unit_lit, unit_shadowed;
+    FT unit_lit = 0, unit_shadowed = 0;
     for (const PartitionRegion& part : parts) {
       FootprintRegion r;
       r.light = light;
@@ -307,13 +265,13 @@ Footprints compute_footprints(const Scene& input, const FootprintOptions& option
         items.push_back({l, m, p});
   std::vector<PolygonResult> results(items.size());
   const Context ctx{scene, index, sides, surfaces};
-  // One thread for now: with two, CGAL 5.5's lazy exact kernel gave
-  // different regions in about one run in six
-  // (FootprintOracle.OneAndTwoThreadsGiveTheSameRegions), though no lazy
-  // object is shared between items that we know of. Until that is
-  // understood, determinism beats speed; the volumes above still use
-  // options.threads.
-  util::parallel_for(items.size(), 1, [&](std::size_t i) {
+  // Every item owns its exact objects (planes, arrangements, lazy numbers);
+  // what they share (the scene, its index, the light sides) is doubles, so
+  // the items run on any number of threads and the result is the same.
+  // (One run in six differed with two threads while some Epeck numbers were
+  // default-constructed, whose interval approximation CGAL leaves
+  // uninitialized in release builds; every FT here now starts from 0.)
+  util::parallel_for(items.size(), options.threads, [&](std::size_t i) {
     results[i] = footprint_of(ctx, items[i].light, items[i].model, items[i].polygon);
   });
   for (PolygonResult& r : results) {

@@ -68,9 +68,8 @@ struct FootprintOptions {
   /// Treat lights with light_end as unlimited (their sphere of influence
   /// is not applied); without it such a light is refused.
   bool ignore_light_end = false;
-  /// Threads building the volumes; 0: what the process may use. The
-  /// partition itself runs on one thread for now (footprint.cpp says
-  /// why). The result does not depend on it.
+  /// Threads building the volumes and partitioning the receivers; 0: what
+  /// the process may use. The result does not depend on it, byte for byte.
   unsigned threads = 0;
 };
 

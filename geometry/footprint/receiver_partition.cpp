@@ -5,6 +5,8 @@
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 
+#include <algorithm>
+#include <map>
 #include <stdexcept>
 
 namespace umbra::geometry::detail {
@@ -191,38 +193,123 @@ Point2 vertical_hit(const std::vector<Halfedge>& boundary, const Point2& p, bool
   return {p.x(), *best};
 }
 
-/// Cuts every labelled face with holes from each hole's leftmost vertices,
-/// up from the topmost of them and down from the bottommost: each hole is
-/// joined to what lies above and below it, so no face keeps a hole.
+bool less_xy(const Point2& a, const Point2& b) { return CGAL::compare_xy(a, b) == CGAL::SMALLER; }
+
+FT twice_area(const std::vector<Point2>& ring) {
+  FT twice = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % ring.size()];
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return twice;
+}
+
+/// A boundary that passes through a vertex twice, cut there into loops
+/// that do not: each loop runs from a repeated vertex back to it. A face's
+/// outer boundary does so where a hole touches it at a vertex (that loop
+/// runs clockwise: the hole is on its right) or where two lobes of the
+/// face touch (both run counter-clockwise).
+std::vector<std::vector<Point2>> loops_of(const std::vector<Point2>& ring) {
+  std::vector<std::vector<Point2>> loops;
+  std::vector<Point2> stack;
+  std::map<Point2, std::size_t, decltype(&less_xy)> at(&less_xy);
+  for (const Point2& p : ring) {
+    const auto it = at.find(p);
+    if (it == at.end()) {
+      at.emplace(p, stack.size());
+      stack.push_back(p);
+      continue;
+    }
+    // p closes the loop stack[it->second ..]; p stays as its start.
+    std::vector<Point2> loop(stack.begin() + static_cast<std::ptrdiff_t>(it->second), stack.end());
+    for (std::size_t k = it->second + 1; k < stack.size(); ++k) at.erase(stack[k]);
+    stack.resize(it->second + 1);
+    loops.push_back(std::move(loop));
+  }
+  loops.push_back(std::move(stack));
+  return loops;
+}
+
+/// The outer boundary of f as its vertices, in order.
+std::vector<Point2> outer_ring(Face f) {
+  std::vector<Point2> ring;
+  auto c = f->outer_ccb();
+  const auto first = c;
+  do ring.push_back(c->source()->point());
+  while (++c != first);
+  return ring;
+}
+
+/// Where to cut so that f's hole, or the loop of its outer boundary that a
+/// hole touching it at a vertex makes, joins the rest of f's boundary.
+/// Vertical rays from a loop's extreme vertices meet nothing of the loop:
+/// up from the topmost of its leftmost (or rightmost) vertices, down from
+/// the bottommost. A hole is cut up and down from its leftmost vertices,
+/// which splits f so that no piece keeps the hole. A touching loop needs
+/// one cut, from an extreme vertex other than those it touches the rest of
+/// the boundary at (`touches`): that cut alone puts the two visits of the
+/// vertex it touches at in different pieces.
+void add_cuts(const std::vector<Halfedge>& boundary, const std::vector<Point2>& loop,
+              const std::vector<Point2>* touches, std::vector<Curve>& cuts) {
+  const auto extreme = [&](bool leftmost, bool top) {
+    const Point2* best = &loop.front();
+    for (const Point2& q : loop) {
+      const CGAL::Comparison_result cx = CGAL::compare_x(q, *best);
+      const bool further = leftmost ? cx == CGAL::SMALLER : cx == CGAL::LARGER;
+      if (further || (cx == CGAL::EQUAL && (top ? q.y() > best->y() : q.y() < best->y())))
+        best = &q;
+    }
+    return *best;
+  };
+  if (!touches) {
+    const Point2 top = extreme(true, true), bottom = extreme(true, false);
+    cuts.emplace_back(top, vertical_hit(boundary, top, true));
+    cuts.emplace_back(bottom, vertical_hit(boundary, bottom, false));
+    return;
+  }
+  for (const bool leftmost : {true, false}) {
+    for (const bool top : {true, false}) {
+      const Point2 u = extreme(leftmost, top);
+      if (std::find(touches->begin(), touches->end(), u) != touches->end()) continue;
+      cuts.emplace_back(u, vertical_hit(boundary, u, top));
+      return;
+    }
+  }
+  throw std::logic_error("partition_receiver: a touching loop with no vertex but its touch");
+}
+
+/// Cuts every labelled face until none has a hole or a hole touching its
+/// outer boundary, so that every face's outer boundary is one simple
+/// polygon or lobes meeting at vertices (which regions_of separates).
 void cut_holes(Arrangement& arr) {
   for (int round = 0;; ++round) {
     if (round > 100000) throw std::logic_error("partition_receiver: holes do not close");
-    Face f;
-    bool found = false;
-    for (auto g = arr.faces_begin(); g != arr.faces_end() && !found; ++g) {
-      if (g->data() != kLit && g->data() != kShadowed) continue;
-      if (g->number_of_holes() > 0) {
-        f = g;
-        found = true;
+    std::vector<Curve> cuts;
+    for (auto f = arr.faces_begin(); f != arr.faces_end() && cuts.empty(); ++f) {
+      if (f->data() != kLit && f->data() != kShadowed) continue;
+      const std::vector<Halfedge> boundary = boundary_of(f);
+      for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
+        std::vector<Point2> hole;
+        auto c = *h;
+        const auto start = c;
+        do hole.push_back(c->target()->point());
+        while (++c != start);
+        add_cuts(boundary, hole, nullptr, cuts);
+      }
+      if (!cuts.empty()) break;
+      const std::vector<Point2> ring = outer_ring(f);
+      for (const std::vector<Point2>& loop : loops_of(ring)) {
+        if (!CGAL::is_negative(twice_area(loop))) continue;
+        // The loop's vertices that the ring visits more than once.
+        std::vector<Point2> touches;
+        for (const Point2& q : loop)
+          if (std::count(ring.begin(), ring.end(), q) > 1) touches.push_back(q);
+        add_cuts(boundary, loop, &touches, cuts);
+        break;
       }
     }
-    if (!found) return;
-    const std::vector<Halfedge> boundary = boundary_of(f);
-    std::vector<Curve> cuts;
-    for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
-      Point2 top, bottom;
-      bool first = true;
-      auto c = *h;
-      const auto start = c;
-      do {
-        const Point2& q = c->target()->point();
-        if (first || q.x() < top.x() || (q.x() == top.x() && q.y() > top.y())) top = q;
-        if (first || q.x() < bottom.x() || (q.x() == bottom.x() && q.y() < bottom.y())) bottom = q;
-        first = false;
-      } while (++c != start);
-      cuts.emplace_back(top, vertical_hit(boundary, top, true));
-      cuts.emplace_back(bottom, vertical_hit(boundary, bottom, false));
-    }
+    if (cuts.empty()) return;
     for (const Curve& cut : cuts) CGAL::insert(arr, cut);
   }
 }
@@ -255,23 +342,23 @@ std::vector<PartitionRegion> partition_receiver(const ReceiverOutline& outline,
   std::vector<PartitionRegion> regions;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (f->data() != kLit && f->data() != kShadowed) continue;
-    PartitionRegion region;
-    region.cls = f->data() == kLit ? FootprintClass::lit : FootprintClass::shadowed;
     auto c = f->outer_ccb();
     const auto first = c;
     do {
       if (c->twin()->face() == f)
         throw std::logic_error("partition_receiver: a region's boundary runs along itself");
-      region.ring.push_back(c->source()->point());
     } while (++c != first);
-    FT twice;
-    for (std::size_t i = 0; i < region.ring.size(); ++i) {
-      const Point2& a = region.ring[i];
-      const Point2& b = region.ring[(i + 1) % region.ring.size()];
-      twice += a.x() * b.y() - a.y() * b.x();
+    // Lobes of one face that touch at a vertex are separate regions.
+    for (std::vector<Point2>& loop : loops_of(outer_ring(f))) {
+      PartitionRegion region;
+      region.cls = f->data() == kLit ? FootprintClass::lit : FootprintClass::shadowed;
+      region.area = twice_area(loop) / 2;
+      if (!CGAL::is_positive(region.area))
+        throw std::logic_error(
+            "partition_receiver: a region's loop does not run counter-clockwise");
+      region.ring = std::move(loop);
+      regions.push_back(std::move(region));
     }
-    region.area = twice / 2;
-    regions.push_back(std::move(region));
   }
   return regions;
 }

@@ -23,7 +23,7 @@ struct ReceiverOutline {
 struct PartitionRegion {
   FootprintClass cls = FootprintClass::lit;
   std::vector<Point2> ring;  ///< counter-clockwise, a simple polygon
-  FT area;                   ///< in the plane's 2D coordinates, exact
+  FT area = 0;               ///< in the plane's 2D coordinates, exact
 };
 
 /// Answers whether a point strictly inside the surface, off every boundary

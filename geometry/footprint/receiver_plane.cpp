@@ -90,6 +90,8 @@ std::array<FT, 3> ReceiverPlane::restrict(const std::array<FT, 3>& q, const FT& 
 
 FT ReceiverPlane::area_scale_squared() const { return dot(n_, n_) / (n_[drop_] * n_[drop_]); }
 
+FT ReceiverPlane::normal_squared() const { return dot(n_, n_); }
+
 void add_side_segment(const ReceiverPlane& plane, const Box2& box, const Vec3& a, const Vec3& b,
                       const HPoint& light, std::vector<Segment2>& out) {
   const Vec3F pa = exact(a), pb = exact(b), l = exact(light.v);

@@ -46,6 +46,8 @@ class ReceiverPlane {
   /// |n| / |n_k|: a 2D area times this factor's value is the 3D area. Its
   /// square, exactly.
   FT area_scale_squared() const;
+  /// |n|², for distances from the plane: height(p)² / |n|².
+  FT normal_squared() const;
 
  private:
   std::array<FT, 3> n_;

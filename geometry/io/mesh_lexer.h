@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace umbra::geometry::detail {
 
@@ -20,6 +21,19 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name);
 PolygonSoup parse_obj(std::string_view bytes, const std::string& name);
 PolygonSoup parse_ply(std::string_view bytes, const std::string& name);
 PolygonSoup parse_stl(std::string_view bytes, const std::string& name);
+
+/// A PLY file's polygons with its face element's integer scalar properties
+/// (footprint files carry light, model, class... on each face).
+struct PlyFaceTable {
+  PolygonSoup soup;
+  std::vector<std::string> names;                  ///< the face properties, in header order
+  std::vector<std::vector<std::int64_t>> columns;  ///< one value per face for each name
+  bool float_coordinates = false;                  ///< some of x, y, z is a float
+};
+/// parse_ply, keeping the face element's integer properties, and reading
+/// faces of up to `max_polygon_vertices` vertices.
+PlyFaceTable parse_ply_face_table(std::string_view bytes, const std::string& name,
+                                  std::size_t max_polygon_vertices);
 
 /// "name:line", the location of a text line (1-based).
 std::string at_line(const std::string& name, std::size_t line);

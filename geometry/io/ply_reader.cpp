@@ -9,8 +9,12 @@
 // and index types. Every other property and element is read past, in all three
 // encodings. Element counts are checked against the bytes left before anything
 // is reserved. Locations: "file:line" in ASCII, "file: byte N" in binary.
+// Over 500 lines: the header, the three encodings and the face-table variant
+// (footprint files' face properties) share one parser, which splitting would
+// have to expose.
 #include <geometry/io/mesh_lexer.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -356,8 +360,16 @@ void check_counts(const Header& header, std::size_t body_size, const std::string
   }
 }
 
+/// What read_body keeps besides the soup: the face element's integer
+/// scalar properties, by column, when a caller asks for them.
+struct FaceColumns {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::int64_t>> values;
+};
+
 template <typename Source>
-void read_body(Source& source, const Header& header, PolygonSoup& soup) {
+void read_body(Source& source, const Header& header, PolygonSoup& soup,
+               std::size_t max_polygon_vertices, FaceColumns* columns) {
   std::uint64_t vertex_count = 0;
   for (const Element& element : header.elements) {
     if (element.name == "vertex") vertex_count = element.count;
@@ -388,8 +400,12 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
             throw util::InputError(
                 at, "face has " + std::to_string(n) + " vertices; at least 3 are needed");
           }
-          if (static_cast<std::uint64_t>(n) > kMaxPolygonVertices)
-            throw util::InputError(at, polygon_too_large(static_cast<std::uint64_t>(n)));
+          if (static_cast<std::uint64_t>(n) > max_polygon_vertices)
+            throw util::InputError(at,
+                                   max_polygon_vertices == kMaxPolygonVertices
+                                       ? polygon_too_large(static_cast<std::uint64_t>(n))
+                                       : "face has " + std::to_string(n) + " vertices; at most " +
+                                             std::to_string(max_polygon_vertices) + " are read");
           Polygon polygon;
           polygon.reserve(static_cast<std::size_t>(n));
           for (std::int64_t k = 0; k < n; ++k) {
@@ -410,6 +426,10 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
             throw util::InputError(source.last_where(),
                                    "coordinate " + property.name + " is not finite");
           (property.name == "x" ? p.x : property.name == "y" ? p.y : p.z) = value;
+        } else if (is_face && columns && is_integer(property.type)) {
+          const std::int64_t value = source.integer(property.type, "face property", context);
+          for (std::size_t c = 0; c < columns->names.size(); ++c)
+            if (columns->names[c] == property.name) columns->values[c].push_back(value);
         } else {
           source.real(property.type, "value", context);
         }
@@ -421,7 +441,11 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup) {
 
 }  // namespace
 
-PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
+namespace {
+
+PolygonSoup parse_ply_into(std::string_view bytes, const std::string& name,
+                           std::size_t max_polygon_vertices, FaceColumns* columns,
+                           bool* float_coordinates) {
   const Header header = parse_header(bytes, name);
 
   const Element* vertex = nullptr;
@@ -473,14 +497,49 @@ PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
   PolygonSoup soup;
   if (vertex) soup.vertices.reserve(vertex->count);
   if (face) soup.polygons.reserve(face->count);
+  if (columns && face) {
+    for (const Property& property : face->properties) {
+      if (property.is_list || !is_integer(property.type)) continue;
+      if (std::find(columns->names.begin(), columns->names.end(), property.name) !=
+          columns->names.end())
+        throw util::InputError(at_line(name, face->line),
+                               "face property " + property.name + " declared twice");
+      columns->names.push_back(property.name);
+      columns->values.emplace_back().reserve(face->count);
+    }
+  }
+  if (float_coordinates && vertex) {
+    *float_coordinates = false;
+    for (const Property& property : vertex->properties)
+      if ((property.name == "x" || property.name == "y" || property.name == "z") &&
+          property.type == Scalar::f32)
+        *float_coordinates = true;
+  }
   if (header.encoding == Encoding::ascii) {
     AsciiSource source(bytes.substr(header.data_offset), header.data_line, name);
-    read_body(source, header, soup);
+    read_body(source, header, soup, max_polygon_vertices, columns);
   } else {
     BinarySource source(bytes, header.data_offset, header.encoding == Encoding::big_endian, name);
-    read_body(source, header, soup);
+    read_body(source, header, soup, max_polygon_vertices, columns);
   }
   return soup;
+}
+
+}  // namespace
+
+PolygonSoup parse_ply(std::string_view bytes, const std::string& name) {
+  return parse_ply_into(bytes, name, kMaxPolygonVertices, nullptr, nullptr);
+}
+
+PlyFaceTable parse_ply_face_table(std::string_view bytes, const std::string& name,
+                                  std::size_t max_polygon_vertices) {
+  PlyFaceTable table;
+  FaceColumns columns;
+  table.soup =
+      parse_ply_into(bytes, name, max_polygon_vertices, &columns, &table.float_coordinates);
+  table.names = std::move(columns.names);
+  table.columns = std::move(columns.values);
+  return table;
 }
 
 }  // namespace umbra::geometry::detail

@@ -7,6 +7,7 @@
 // square [-2, 2]² (tests/geometry/footprint/footprint_test.cpp).
 #include <geometry/export/footprint_export.h>
 #include <geometry/footprint/footprint.h>
+#include <tests/support/polygon_model.h>
 #include <util/input_error.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -34,15 +35,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Model polygon_model(std::string name, std::vector<Vec3> v) {
-  Model m;
-  m.name = std::move(name);
-  m.vertices = std::move(v);
-  Polygon p;
-  for (std::uint32_t i = 0; i < m.vertices.size(); ++i) p.push_back(i);
-  m.polygons = {p};
-  return m;
-}
+using test::polygon_model;
 
 Light point_light(Vec3 at) {
   Light l;

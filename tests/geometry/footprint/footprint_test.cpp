@@ -2,6 +2,7 @@
 // hand: exact vertices and areas. y is up; the floor is y = 0.
 #include <geometry/footprint/footprint.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <tests/support/polygon_model.h>
 
 #include <gtest/gtest.h>
 
@@ -11,15 +12,7 @@
 namespace umbra::geometry {
 namespace {
 
-Model polygon_model(std::string name, std::vector<Vec3> v) {
-  Model m;
-  m.name = std::move(name);
-  m.vertices = std::move(v);
-  Polygon p;
-  for (std::uint32_t i = 0; i < m.vertices.size(); ++i) p.push_back(i);
-  m.polygons = {p};
-  return m;
-}
+using test::polygon_model;
 
 /// [-10, 10]² at y = 0, counter-clockwise seen from above.
 Model floor_model() {

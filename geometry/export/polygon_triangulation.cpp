@@ -1,0 +1,107 @@
+#include <geometry/export/polygon_triangulation.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cmath>
+#include <optional>
+
+namespace umbra::geometry::detail {
+
+namespace {
+
+using K = CGAL::Epick;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::optional<std::uint32_t>, K>;
+/// Face info: the number of constraints crossed from the outside; odd is inside.
+using Fbi = CGAL::Triangulation_face_base_with_info_2<int, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+
+std::vector<std::array<std::uint32_t, 3>> fan_of(std::size_t n) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (std::uint32_t k = 1; k + 1 < n; ++k) out.push_back({0, k, k + 1});
+  return out;
+}
+
+/// Labels each finite face with its nesting depth: 0 outside, 1 inside,
+/// crossing one constraint per step (CGAL's polygon_triangulation example).
+void mark_depths(Cdt& cdt) {
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  std::vector<Cdt::Face_handle> frontier{cdt.infinite_face()};
+  cdt.infinite_face()->info() = 0;
+  for (int depth = 0; !frontier.empty(); ++depth) {
+    std::vector<Cdt::Face_handle> next;
+    while (!frontier.empty()) {
+      const Cdt::Face_handle f = frontier.back();
+      frontier.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const Cdt::Face_handle g = f->neighbor(i);
+        if (g->info() != -1) continue;
+        if (cdt.is_constrained({f, i})) {
+          g->info() = depth + 1;
+          next.push_back(g);
+        } else {
+          g->info() = depth;
+          frontier.push_back(g);
+        }
+      }
+    }
+    frontier = std::move(next);
+  }
+}
+
+}  // namespace
+
+std::vector<std::array<std::uint32_t, 3>> triangulate_ring(const std::vector<Vec3>& ring) {
+  const std::size_t n = ring.size();
+  if (n <= 3) return fan_of(n);
+  // Newell's normal: its largest component names the axis to drop.
+  double nx = 0, ny = 0, nz = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& a = ring[i];
+    const Vec3& b = ring[(i + 1) % n];
+    nx += (a.y - b.y) * (a.z + b.z);
+    ny += (a.z - b.z) * (a.x + b.x);
+    nz += (a.x - b.x) * (a.y + b.y);
+  }
+  const int drop = std::abs(nx) >= std::abs(ny) && std::abs(nx) >= std::abs(nz) ? 0
+                   : std::abs(ny) >= std::abs(nz)                               ? 1
+                                                                                : 2;
+  const auto project = [drop](const Vec3& v) {
+    return drop == 0   ? K::Point_2(v.y, v.z)
+           : drop == 1 ? K::Point_2(v.z, v.x)
+                       : K::Point_2(v.x, v.y);
+  };
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> handles;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Cdt::Vertex_handle h = cdt.insert(project(ring[i]));
+    if (h->info()) return fan_of(n);  // a repeated vertex: not simple
+    h->info() = i;
+    handles.push_back(h);
+  }
+  for (std::size_t i = 0; i < n; ++i) cdt.insert_constraint(handles[i], handles[(i + 1) % n]);
+  if (cdt.number_of_vertices() != n) return fan_of(n);  // constraints crossed: not simple
+  mark_depths(cdt);
+  // CGAL's faces run counter-clockwise in the projection; the ring may not.
+  double twice = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const K::Point_2 a = project(ring[i]), b = project(ring[(i + 1) % n]);
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info() % 2 != 1) continue;
+    std::array<std::uint32_t, 3> t{*f->vertex(0)->info(), *f->vertex(1)->info(),
+                                   *f->vertex(2)->info()};
+    if (twice < 0) std::swap(t[1], t[2]);
+    out.push_back(t);
+  }
+  if (out.size() != n - 2) return fan_of(n);  // a vertex on another's edge: not simple
+  return out;
+}
+
+}  // namespace umbra::geometry::detail
