@@ -1,0 +1,30 @@
+#pragma once
+// Pixel counting, the method the exact footprints are measured against
+// (issue 19): the scene drawn orthographically from the sun into a
+// polygon-ID buffer, as EnergyPlus's GPU shading and GIS tools do, and each
+// receiver's sunlit fraction taken as its visible texels over its area seen
+// from the sun.
+#include <geometry/scene.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace umbra::bench {
+
+struct PixelCount {
+  int resolution = 0;
+  /// Per (model, polygon), flattened model by model: the fraction of the
+  /// polygon's area seen from the sun that its visible texels cover.
+  std::vector<double> sunlit_fraction;
+  std::vector<std::uint32_t> first_polygon;  ///< index of each model's polygon 0 in the above
+  double seconds = 0;
+};
+
+/// Draws every shadow-casting polygon and every polygon of `receivers`
+/// (model indices) of `scene` (as their fan triangles) into a
+/// resolution² ID and depth buffer looking along the scene's light 0,
+/// which must be directional.
+PixelCount count_pixels(const geometry::Scene& scene, const std::vector<std::uint32_t>& receivers,
+                        int resolution);
+
+}  // namespace umbra::bench
