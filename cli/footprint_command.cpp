@@ -60,8 +60,8 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
       ->check(non_empty_path())
       ->type_name("FILE");
   cmd->add_option("--threads", args.threads,
-                  "Worker threads building the volumes (0 = the CPUs the process may use; the "
-                  "partition runs on one for now); the output does not depend on it")
+                  "Worker threads building the volumes and partitioning the receivers (0 = the "
+                  "CPUs the process may use); the output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
   add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
