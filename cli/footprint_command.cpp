@@ -170,7 +170,9 @@ int run_footprint(const FootprintArgs& args) {
       if (p.polygons == 0) continue;  // not chosen by --lights
       fmt::print(stderr,
                  "light {}: {}: {} regions on {} receiver polygons, shadowed {:.6g} of {:.6g}\n", l,
-                 describe_light(scene.lights[l]), p.regions, p.polygons, p.shadowed, p.area);
+                 describe_light(scene.lights[l]) +
+                     (args.ignore_light_end && scene.lights[l].light_end ? " (ignored)" : ""),
+                 p.regions, p.polygons, p.shadowed, p.area);
     }
     fmt::print(
         stderr,

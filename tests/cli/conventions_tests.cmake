@@ -125,7 +125,7 @@ umbra_cli_test(validate_verbose ARGS validate ${_local_mesh}/scene.json --image 
 umbra_cli_test(footprint_verbose ARGS footprint
   ${PROJECT_SOURCE_DIR}/data/scenes/two_lights.json --ignore-light-end -o out.ply -v EXIT 0
   STDOUT "^wrote out\\.ply: [0-9]+ regions [^\n]*\n$"
-  STDERR "^light 0: point at \\(3, 6, 3\\), light_end 12: [0-9]+ regions on [0-9]+ receiver polygons, shadowed [0-9.e+-]+ of [0-9.e+-]+\nlight 1: directional toward \\(1, -2, -0\\.5\\): [0-9]+ regions on [0-9]+ receiver polygons, shadowed [^\n]*\nseconds: load [0-9.]+, volumes [0-9.]+, partition [0-9.]+, write [0-9.]+, total [0-9.]+\n$"
+  STDERR "^light 0: point at \\(3, 6, 3\\), light_end 12 \\(ignored\\): [0-9]+ regions on [0-9]+ receiver polygons, shadowed [0-9.e+-]+ of [0-9.e+-]+\nlight 1: directional toward \\(1, -2, -0\\.5\\): [0-9]+ regions on [0-9]+ receiver polygons, shadowed [^\n]*\nseconds: load [0-9.]+, volumes [0-9.]+, partition [0-9.]+, write [0-9.]+, total [0-9.]+\n$"
   EXIST out.ply)
 foreach(verb render volume validate footprint)
   set(_image "")
