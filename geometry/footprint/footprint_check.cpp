@@ -178,12 +178,20 @@ void Checker::check_piece(const Key& key, const ReceiverUnit& unit,
   const HPoint light = light_point(scene.lights[static_cast<std::size_t>(std::get<0>(key))]);
   const std::int64_t facing = static_cast<std::int64_t>(plane.side(light));
 
+  // Every point of the receiver lies in its vertices' box, so no coordinate
+  // of an exact region vertex exceeds theirs: the rounding is bounded from
+  // the receiver alone (a file's own far-off vertices must not widen it).
   double magnitude = 0;
-  for (const Vec3& v : unit.vertices)
+  std::array<double, 3> lo{unit.vertices[0].x, unit.vertices[0].y, unit.vertices[0].z};
+  std::array<double, 3> hi = lo;
+  for (const Vec3& v : unit.vertices) {
     magnitude = std::max({magnitude, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-  for (std::size_t f : faces)
-    for (const Vec3& v : file.faces[f].vertices)
-      magnitude = std::max({magnitude, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    const std::array<double, 3> c{v.x, v.y, v.z};
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], c[k]);
+      hi[k] = std::max(hi[k], c[k]);
+    }
+  }
   const double delta = rounding_of(magnitude);
   const FT delta_exact(delta);
 
@@ -218,6 +226,16 @@ void Checker::check_piece(const Key& key, const ReceiverUnit& unit,
       continue;
     }
     std::vector<Point2> ring;
+    const auto outside = [&](const Vec3& v) {
+      const std::array<double, 3> c{v.x, v.y, v.z};
+      for (int k = 0; k < 3; ++k)
+        if (c[k] < lo[k] - delta || c[k] > hi[k] + delta) return true;
+      return false;
+    };
+    if (std::any_of(face.vertices.begin(), face.vertices.end(), outside)) {
+      failures.add(fmt::format("{}: a vertex lies outside the receiver's bounds", where));
+      continue;
+    }
     bool on_plane = true;
     for (const Vec3& v : face.vertices) {
       const FT h = plane.height(Point3(v.x, v.y, v.z));

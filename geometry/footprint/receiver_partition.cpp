@@ -281,7 +281,8 @@ void add_cuts(const std::vector<Halfedge>& boundary, const std::vector<Point2>& 
 
 /// Cuts every labelled face until none has a hole or a hole touching its
 /// outer boundary, so that every face's outer boundary is one simple
-/// polygon or lobes meeting at vertices (which regions_of separates).
+/// polygon or lobes meeting at vertices (which partition_receiver writes
+/// as separate regions).
 void cut_holes(Arrangement& arr) {
   for (int round = 0;; ++round) {
     if (round > 100000) throw std::logic_error("partition_receiver: holes do not close");

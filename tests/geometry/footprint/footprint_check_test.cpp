@@ -111,11 +111,36 @@ TEST_F(FootprintCheck, ASelfIntersectingRegionIsRefused) {
 }
 
 TEST_F(FootprintCheck, AVertexOffThePlaneBeyondRoundingIsRefused) {
-  file.faces[floor_shadow].vertices[0].y = 1e-12;
+  // A tilted floor (y = z / 10), so that a shadow vertex can leave the plane
+  // and stay inside the receiver's box.
+  scene.models[0] =
+      polygon_model("floor", {{-10, -1, -10}, {-10, 1, 10}, {10, 1, 10}, {10, -1, -10}});
+  file = as_file(compute_footprints(scene), scene);
+  ASSERT_TRUE(check_footprint(scene, file).ok());
+  const auto shadow = std::find_if(file.faces.begin(), file.faces.end(),
+                                   [](const auto& f) { return f.model == 0 && f.cls == 0; });
+  ASSERT_NE(shadow, file.faces.end());
+  const double y = shadow->vertices[0].y;
+  shadow->vertices[0].y = y + 1e-9;
   EXPECT_TRUE(lists(check_footprint(scene, file), "lies off the receiver's plane"));
   // An ulp is within rounding.
-  file.faces[floor_shadow].vertices[0].y = 1e-300;
+  shadow->vertices[0].y = std::nextafter(y, 2.0);
   EXPECT_TRUE(check_footprint(scene, file).ok());
+  // On the flat floor, off its plane is outside its box.
+  SetUp();
+  file.faces[floor_shadow].vertices[0].y = 1e-12;
+  EXPECT_TRUE(lists(check_footprint(scene, file), "a vertex lies outside the receiver's bounds"));
+}
+
+TEST_F(FootprintCheck, AVertexOutsideTheReceiverIsRefusedBeforeAnyBooleanOperation) {
+  // A far-off vertex (as a fuzzed file had: z = -3.2e226) neither widens
+  // the rounding allowed nor reaches the polygon sets.
+  file.faces[floor_shadow].vertices[3].z = -3.158606144817523e+226;
+  const FootprintCheckReport r = check_footprint(scene, file);
+  EXPECT_TRUE(lists(r, "region " + std::to_string(floor_shadow) +
+                           " (light 0, model 0 'floor', polygon 0): a vertex lies outside the "
+                           "receiver's bounds"));
+  EXPECT_TRUE(lists(r, "regions differ from its surface"));  // its square is missing
 }
 
 TEST_F(FootprintCheck, AVertexMovedWithinRoundingStillPasses) {
