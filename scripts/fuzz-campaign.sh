@@ -32,7 +32,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-harnesses=(scene_json mesh_off mesh_obj mesh_ply mesh_stl volume twist render gltf glb image)
+harnesses=(scene_json mesh_off mesh_obj mesh_ply mesh_stl volume twist render gltf glb image footprint)
 if [ -n "$only" ]; then IFS=, read -r -a harnesses <<< "$only"; fi
 
 if [ ! -x "$build/fuzz/fuzz_${harnesses[0]}" ]; then
