@@ -82,15 +82,7 @@ double worst_error(const Case& c, const geometry::Footprints& f, const PixelCoun
   const double len = std::sqrt(s.x * s.x + s.y * s.y + s.z * s.z);
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, double>> seen;  // lit, all
   for (const geometry::FootprintRegion& r : f.regions) {
-    double n[3] = {0, 0, 0};
-    for (std::size_t i = 0; i < r.vertices.size(); ++i) {
-      const geometry::Vec3& a = r.vertices[i];
-      const geometry::Vec3& b = r.vertices[(i + 1) % r.vertices.size()];
-      n[0] += (a.y - b.y) * (a.z + b.z);
-      n[1] += (a.z - b.z) * (a.x + b.x);
-      n[2] += (a.x - b.x) * (a.y + b.y);
-    }
-    const double area = std::abs(n[0] * s.x + n[1] * s.y + n[2] * s.z) / (2 * len);
+    const double area = std::abs(geometry::dot(geometry::newell(r.vertices), s)) / (2 * len);
     auto& e = seen[{r.model, r.polygon}];
     e.second += area;
     if (r.cls == geometry::FootprintClass::lit) e.first += area;

@@ -3,6 +3,8 @@
 // component by component, left to right, so that results are reproducible
 // bit for bit (the build uses -ffp-contract=off: no fused multiply-add).
 #include <cmath>
+#include <cstddef>
+#include <span>
 
 namespace umbra::geometry {
 
@@ -29,6 +31,17 @@ inline Vec3 normalize(const Vec3& v) { return v / std::sqrt(dot(v, v)); }
 inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 inline bool is_finite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+/// Newell's vector of the closed ring: twice its area vector for a planar
+/// ring, pointing to the side from which it runs counter-clockwise.
+inline Vec3 newell(std::span<const Vec3> ring) {
+  Vec3 n{0, 0, 0};
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Vec3& a = ring[k];
+    const Vec3& b = ring[(k + 1) % ring.size()];
+    n = n + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+  }
+  return n;
 }
 
 }  // namespace umbra::geometry

@@ -32,18 +32,10 @@ bool is_lit(const FootprintRegion& r) { return r.cls == FootprintClass::lit; }
 /// The region's unit normal by Newell's formula (its front: the ring runs
 /// counter-clockwise seen from there); zero for a ring of no area.
 std::array<float, 3> unit_normal(const std::vector<Vec3>& ring) {
-  double n[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Vec3& a = ring[i];
-    const Vec3& b = ring[(i + 1) % ring.size()];
-    n[0] += (a.y - b.y) * (a.z + b.z);
-    n[1] += (a.z - b.z) * (a.x + b.x);
-    n[2] += (a.x - b.x) * (a.y + b.y);
-  }
-  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if (!(length > 0)) return {0, 0, 0};
-  return {static_cast<float>(n[0] / length), static_cast<float>(n[1] / length),
-          static_cast<float>(n[2] / length)};
+  const Vec3 n = newell(ring);
+  const double l = length(n);
+  if (!(l > 0)) return {0, 0, 0};
+  return {static_cast<float>(n.x / l), static_cast<float>(n.y / l), static_cast<float>(n.z / l)};
 }
 
 class FootprintGltf {

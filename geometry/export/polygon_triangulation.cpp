@@ -2,6 +2,7 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -59,14 +60,8 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_ring(const std::vector<Vec
   const std::size_t n = ring.size();
   if (n <= 3) return fan_of(n);
   // Newell's normal: its largest component names the axis to drop.
-  double nx = 0, ny = 0, nz = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& a = ring[i];
-    const Vec3& b = ring[(i + 1) % n];
-    nx += (a.y - b.y) * (a.z + b.z);
-    ny += (a.z - b.z) * (a.x + b.x);
-    nz += (a.x - b.x) * (a.y + b.y);
-  }
+  const Vec3 normal = newell(ring);
+  const double nx = normal.x, ny = normal.y, nz = normal.z;
   const int drop = std::abs(nx) >= std::abs(ny) && std::abs(nx) >= std::abs(nz) ? 0
                    : std::abs(ny) >= std::abs(nz)                               ? 1
                                                                                 : 2;
@@ -75,10 +70,12 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_ring(const std::vector<Vec
            : drop == 1 ? K::Point_2(v.z, v.x)
                        : K::Point_2(v.x, v.y);
   };
+  std::vector<K::Point_2> points;
+  for (const Vec3& v : ring) points.push_back(project(v));
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> handles;
   for (std::uint32_t i = 0; i < n; ++i) {
-    const Cdt::Vertex_handle h = cdt.insert(project(ring[i]));
+    const Cdt::Vertex_handle h = cdt.insert(points[i]);
     if (h->info()) return fan_of(n);  // a repeated vertex: not simple
     h->info() = i;
     handles.push_back(h);
@@ -86,21 +83,15 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_ring(const std::vector<Vec
   for (std::size_t i = 0; i < n; ++i) cdt.insert_constraint(handles[i], handles[(i + 1) % n]);
   if (cdt.number_of_vertices() != n) return fan_of(n);  // constraints crossed: not simple
   mark_depths(cdt);
-  // CGAL's faces run counter-clockwise in the projection; the ring may not.
-  double twice = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const K::Point_2 a = project(ring[i]), b = project(ring[(i + 1) % n]);
-    twice += a.x() * b.y() - a.y() * b.x();
-  }
   std::vector<std::array<std::uint32_t, 3>> out;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if (f->info() % 2 != 1) continue;
-    std::array<std::uint32_t, 3> t{*f->vertex(0)->info(), *f->vertex(1)->info(),
-                                   *f->vertex(2)->info()};
-    if (twice < 0) std::swap(t[1], t[2]);
-    out.push_back(t);
-  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->info() % 2 == 1)
+      out.push_back({*f->vertex(0)->info(), *f->vertex(1)->info(), *f->vertex(2)->info()});
   if (out.size() != n - 2) return fan_of(n);  // a vertex on another's edge: not simple
+  // CGAL's faces run counter-clockwise in the projection; the ring, now
+  // known to be simple there, may not (an exact predicate decides).
+  if (CGAL::orientation_2(points.begin(), points.end(), K()) == CGAL::CLOCKWISE)
+    for (auto& t : out) std::swap(t[1], t[2]);
   return out;
 }
 

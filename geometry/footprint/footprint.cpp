@@ -138,7 +138,11 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
                   part.ring.end());
     std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
       if (a.cls != b.cls) return a.cls < b.cls;
-      return a.ring.front() < b.ring.front();
+      // Pieces of one class can share their smallest vertex (two sides of a
+      // cut): the whole rings then decide, so no order of the
+      // arrangement's faces shows through.
+      return std::lexicographical_compare(a.ring.begin(), a.ring.end(), b.ring.begin(),
+                                          b.ring.end());
     });
     result.faces += counts.classified_faces;
 

@@ -82,8 +82,6 @@ double perimeter_of(const std::vector<Point2>& ring) {
   return length;
 }
 
-FT cross2(const FT& ax, const FT& ay, const FT& bx, const FT& by) { return ax * by - ay * bx; }
-
 /// A point inside the simple counter-clockwise ring, different for each
 /// attempt: from a point M on one of its edges (the longest first), a step
 /// along the inward normal half-way to the first boundary that normal
@@ -95,34 +93,15 @@ std::optional<Point2> interior_point(const std::vector<Point2>& ring,
   static constexpr int kFractions[][2] = {{1, 2}, {1, 3}, {2, 3}};
   const std::size_t i = edges_by_length[(attempt / 3) % edges_by_length.size()];
   const auto* frac = kFractions[attempt % 3];
-  const Point2& s = ring[i];
-  const Point2& t = ring[(i + 1) % ring.size()];
-  const FT lambda = FT(frac[0]) / FT(frac[1]);
-  const FT mx = s.x() + lambda * (t.x() - s.x()), my = s.y() + lambda * (t.y() - s.y());
-  const FT nx = -(t.y() - s.y()), ny = t.x() - s.x();  // to the left: inside
+  const InwardRay ray(ring[i], ring[(i + 1) % ring.size()], FT(frac[0]) / FT(frac[1]));
   std::optional<FT> nearest;
   for (std::size_t j = 0; j < ring.size(); ++j) {
     if (j == i) continue;
-    const Point2& a = ring[j];
-    const Point2& b = ring[(j + 1) % ring.size()];
-    const FT ex = b.x() - a.x(), ey = b.y() - a.y();
-    const FT ax = a.x() - mx, ay = a.y() - my;
-    const FT denom = cross2(nx, ny, ex, ey);
-    if (CGAL::is_zero(denom)) {
-      if (!CGAL::is_zero(cross2(ax, ay, nx, ny))) continue;
-      for (const Point2& p : {a, b}) {
-        const FT r = ((p.x() - mx) * nx + (p.y() - my) * ny) / (nx * nx + ny * ny);
-        if (CGAL::is_positive(r) && (!nearest || r < *nearest)) nearest = r;
-      }
-      continue;
-    }
-    const FT r = cross2(ax, ay, ex, ey) / denom;
-    const FT u = cross2(ax, ay, nx, ny) / denom;
-    if (CGAL::is_positive(r) && !CGAL::is_negative(u) && u <= FT(1) && (!nearest || r < *nearest))
-      nearest = r;
+    const std::optional<FT> r = first_hit(ray, ring[j], ring[(j + 1) % ring.size()]);
+    if (r && (!nearest || *r < *nearest)) nearest = r;
   }
   if (!nearest) return std::nullopt;
-  return Point2(mx + *nearest / 2 * nx, my + *nearest / 2 * ny);
+  return ray.at(*nearest / 2);
 }
 
 /// Whether p is farther than `margin` from every edge of the ring.

@@ -55,8 +55,6 @@ std::vector<Halfedge> boundary_of(Face f) {
   return out;
 }
 
-FT cross2(const FT& ax, const FT& ay, const FT& bx, const FT& by) { return ax * by - ay * bx; }
-
 /// A point strictly inside the bounded face f, different for each attempt:
 /// from a point M inside one of its outer halfedges, a step along the
 /// inward normal half-way to the nearest boundary that normal meets.
@@ -66,35 +64,16 @@ Point2 interior_point(const std::vector<Halfedge>& boundary, std::size_t outer_s
   constexpr unsigned kCount = sizeof kFractions / sizeof kFractions[0];
   const Halfedge h = boundary[(attempt * 7) % outer_size];
   const auto* frac = kFractions[attempt % kCount];
-  const Point2& s = h->source()->point();
-  const Point2& t = h->target()->point();
-  const FT lambda = FT(frac[0]) / FT(frac[1]);
-  const FT mx = s.x() + lambda * (t.x() - s.x()), my = s.y() + lambda * (t.y() - s.y());
-  const FT nx = -(t.y() - s.y()), ny = t.x() - s.x();  // to the left: into the face
+  const InwardRay ray(h->source()->point(), h->target()->point(), FT(frac[0]) / FT(frac[1]));
   std::optional<FT> nearest;
   for (const Halfedge& e : boundary) {
     if (e == h) continue;
-    const Point2& a = e->source()->point();
-    const Point2& b = e->target()->point();
-    const FT ex = b.x() - a.x(), ey = b.y() - a.y();
-    const FT ax = a.x() - mx, ay = a.y() - my;
-    const FT denom = cross2(nx, ny, ex, ey);
-    if (CGAL::is_zero(denom)) {
-      if (!CGAL::is_zero(cross2(ax, ay, nx, ny))) continue;  // parallel, off the ray
-      for (const Point2& p : {a, b}) {                       // on the ray's line: its nearer end
-        const FT r = ((p.x() - mx) * nx + (p.y() - my) * ny) / (nx * nx + ny * ny);
-        if (CGAL::is_positive(r) && (!nearest || r < *nearest)) nearest = r;
-      }
-      continue;
-    }
-    const FT r = cross2(ax, ay, ex, ey) / denom;
-    const FT u = cross2(ax, ay, nx, ny) / denom;
-    if (CGAL::is_positive(r) && !CGAL::is_negative(u) && u <= FT(1) && (!nearest || r < *nearest))
-      nearest = r;
+    const std::optional<FT> r = first_hit(ray, e->source()->point(), e->target()->point());
+    if (r && (!nearest || *r < *nearest)) nearest = r;
   }
   if (!nearest) throw std::logic_error("partition_receiver: a bounded face with no boundary ahead");
   const FT step = *nearest / FT(1 + attempt % 3);  // 1/2, 1/3, 1/4 of the way
-  return {mx + step / 2 * nx, my + step / 2 * ny};
+  return ray.at(step / 2);
 }
 
 /// Odd number of fan triangles strictly containing p (p is on none of
@@ -286,19 +265,23 @@ void add_cuts(const std::vector<Halfedge>& boundary, const std::vector<Point2>& 
 void cut_holes(Arrangement& arr) {
   for (int round = 0;; ++round) {
     if (round > 100000) throw std::logic_error("partition_receiver: holes do not close");
+    // Every face's cuts at once: they lie in faces whose interiors are
+    // disjoint, so one face's cuts do not move another's.
     std::vector<Curve> cuts;
-    for (auto f = arr.faces_begin(); f != arr.faces_end() && cuts.empty(); ++f) {
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
       if (f->data() != kLit && f->data() != kShadowed) continue;
       const std::vector<Halfedge> boundary = boundary_of(f);
-      for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
-        std::vector<Point2> hole;
-        auto c = *h;
-        const auto start = c;
-        do hole.push_back(c->target()->point());
-        while (++c != start);
-        add_cuts(boundary, hole, nullptr, cuts);
+      if (f->number_of_holes() > 0) {
+        for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
+          std::vector<Point2> hole;
+          auto c = *h;
+          const auto start = c;
+          do hole.push_back(c->target()->point());
+          while (++c != start);
+          add_cuts(boundary, hole, nullptr, cuts);
+        }
+        continue;  // touching loops, if any, in a later round
       }
-      if (!cuts.empty()) break;
       const std::vector<Point2> ring = outer_ring(f);
       for (const std::vector<Point2>& loop : loops_of(ring)) {
         if (!CGAL::is_negative(twice_area(loop))) continue;

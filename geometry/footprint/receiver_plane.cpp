@@ -174,6 +174,35 @@ mpq_srcptr rational_of(const Q& q) {
     return q.backend().data();
 }
 
+InwardRay::InwardRay(const Point2& s, const Point2& t, const FT& lambda)
+    : mx(s.x() + lambda * (t.x() - s.x())),
+      my(s.y() + lambda * (t.y() - s.y())),
+      nx(-(t.y() - s.y())),
+      ny(t.x() - s.x()) {}
+
+std::optional<FT> first_hit(const InwardRay& ray, const Point2& a, const Point2& b) {
+  const auto cross2 = [](const FT& ax, const FT& ay, const FT& bx, const FT& by) {
+    return ax * by - ay * bx;
+  };
+  const FT ex = b.x() - a.x(), ey = b.y() - a.y();
+  const FT ax = a.x() - ray.mx, ay = a.y() - ray.my;
+  const FT denom = cross2(ray.nx, ray.ny, ex, ey);
+  if (CGAL::is_zero(denom)) {
+    if (!CGAL::is_zero(cross2(ax, ay, ray.nx, ray.ny))) return std::nullopt;  // parallel, off it
+    std::optional<FT> nearest;  // on the ray's line: its nearer end ahead
+    for (const Point2& p : {a, b}) {
+      const FT r = ((p.x() - ray.mx) * ray.nx + (p.y() - ray.my) * ray.ny) /
+                   (ray.nx * ray.nx + ray.ny * ray.ny);
+      if (CGAL::is_positive(r) && (!nearest || r < *nearest)) nearest = r;
+    }
+    return nearest;
+  }
+  const FT r = cross2(ax, ay, ex, ey) / denom;
+  const FT u = cross2(ax, ay, ray.nx, ray.ny) / denom;
+  if (CGAL::is_positive(r) && !CGAL::is_negative(u) && u <= FT(1)) return r;
+  return std::nullopt;
+}
+
 double nearest_double(const FT& x) {
   mpfr_t r;
   mpfr_init2(r, 53);

@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace umbra::geometry::detail {
@@ -73,6 +74,19 @@ void add_side_segment(const ReceiverPlane& plane, const Box2& box, const Vec3& a
 /// along more than a point; nothing for a triangle in the plane or off it.
 void add_piercing_segment(const ReceiverPlane& plane, const Vec3& a, const Vec3& b, const Vec3& c,
                           std::vector<Segment2>& out);
+
+/// The ray from M = s + λ·(t − s) along n, the left normal of s → t
+/// (into a face that lies to the left of that edge): the points M + r·n.
+struct InwardRay {
+  FT mx, my, nx, ny;
+  InwardRay(const Point2& s, const Point2& t, const FT& lambda);
+  Point2 at(const FT& r) const { return {mx + r * nx, my + r * ny}; }
+};
+
+/// The smallest r > 0 at which the ray meets the closed segment (a, b); a
+/// segment along the ray's line counts by its nearer end ahead; nullopt
+/// when it is not met ahead.
+std::optional<FT> first_hit(const InwardRay& ray, const Point2& a, const Point2& b);
 
 /// The nearest double to an exact number.
 double nearest_double(const FT& x);

@@ -40,16 +40,6 @@ std::vector<Vec3> clip_near(const std::vector<Vec3>& in, double near) {
   return out;
 }
 
-Vec3 newell(const std::vector<Vec3>& p) {
-  Vec3 n{0, 0, 0};
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const Vec3& a = p[k];
-    const Vec3& b = p[(k + 1) % p.size()];
-    n = n + Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-  }
-  return n;
-}
-
 std::optional<Projected> project_occluder(const MapView& view, const Occluder& occluder) {
   std::vector<Vec3> p;
   p.reserve(occluder.vertices.size());
@@ -57,7 +47,7 @@ std::optional<Projected> project_occluder(const MapView& view, const Occluder& o
   if (view.perspective) p = clip_near(p, view.near);
   if (p.size() < 3) return std::nullopt;
   Projected out;
-  out.normal = newell(p);
+  out.normal = geometry::newell(p);
   Vec3 centroid{0, 0, 0};
   for (const Vec3& q : p) centroid = centroid + q;
   out.c = geometry::dot(out.normal, centroid / static_cast<double>(p.size()));

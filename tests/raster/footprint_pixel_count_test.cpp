@@ -40,15 +40,7 @@ double texels_crossed(const MapView& view, const std::vector<Vec3>& ring) {
 /// A polygon's area seen along the unit direction d: |N·d| / 2 for its
 /// Newell vector N.
 double projected_area(const std::vector<Vec3>& ring, const Vec3& d) {
-  double n[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Vec3& a = ring[i];
-    const Vec3& b = ring[(i + 1) % ring.size()];
-    n[0] += (a.y - b.y) * (a.z + b.z);
-    n[1] += (a.z - b.z) * (a.x + b.x);
-    n[2] += (a.x - b.x) * (a.y + b.y);
-  }
-  return std::abs(n[0] * d.x + n[1] * d.y + n[2] * d.z) / 2;
+  return std::abs(geometry::dot(geometry::newell(ring), d)) / 2;
 }
 
 struct Counted {
