@@ -4,6 +4,7 @@ find_package(OpenMesh CONFIG REQUIRED)  # CONFIG: CGAL ships a FindOpenMesh that
 find_package(OpenImageIO REQUIRED)
 find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
+find_package(simdjson REQUIRED)  # scene JSON (geometry/io/json_document.h)
 find_package(CLI11 REQUIRED)
 find_package(fmt REQUIRED)
 find_package(TinyGLTF REQUIRED)  # TinyGLTF::TinyGLTF (README.Debian's plain name is wrong)

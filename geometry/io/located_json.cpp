@@ -30,6 +30,15 @@ class LocatingSax {
   bool number_integer(Json::number_integer_t v) { return value(dom_.number_integer(v)); }
   bool number_unsigned(Json::number_unsigned_t v) { return value(dom_.number_unsigned(v)); }
   bool number_float(Json::number_float_t v, const Json::string_t& s) {
+    // An integer nlohmann could only keep as a double; simdjson refuses it,
+    // and so does umbra, rather than read a different number than written.
+    if (s.find_first_of(".eE") == std::string::npos) {
+      const std::string field = path();
+      throw util::InputError(field.empty() ? file_ : file_ + ": " + field,
+                             "integer " + s +
+                                 " does not fit in 64 bits; write it with a decimal point or an "
+                                 "exponent if a rounded double is meant");
+    }
     return value(dom_.number_float(v, s));
   }
   bool string(Json::string_t& v) { return value(dom_.string(v)); }

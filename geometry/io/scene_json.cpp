@@ -1,8 +1,10 @@
 // The JSON scene format (docs/scene-format.md is the user's reference).
 //
-// The text is parsed with every error located (located_json.h); the schema
-// below then walks the document once through validating accessors
-// (json_fields.h) that name each field by its path ("lights[1].position").
+// The text is parsed by simdjson, with every error located by a second pass
+// (json_document.h); the schema below then walks the document once through
+// validating accessors (json_fields.h) that name each field by its path
+// ("lights[1].position"). The inline vertex and face arrays, a scene's bulk,
+// build a path only for a value that is wrong.
 #include <geometry/exact/coordinate_range.h>
 #include <geometry/io/gltf_scene.h>
 #include <geometry/io/json_fields.h>
@@ -14,11 +16,11 @@
 #include <util/input_file.h>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -26,27 +28,31 @@
 namespace umbra::geometry {
 namespace {
 
+using json::Array;
 using json::child;
+using json::Element;
 using json::Fields;
 using json::item;
-using json::Json;
 
-Camera read_camera(const Fields& in, const Json& v) {
+Camera read_camera(const Fields& in, Element v) {
   const std::string path = "camera";
   in.expect_object(v, path);
   in.check_keys(v, path, {"eye", "look_at", "up", "fov_y_deg", "width", "height"});
   Camera camera;
   camera.eye = in.point(in.required(v, "eye", path), "camera.eye");
   camera.look_at = in.point(in.required(v, "look_at", path), "camera.look_at");
-  if (v.contains("up")) camera.up = in.vec3(v["up"], "camera.up");
-  if (v.contains("fov_y_deg")) {
-    camera.fov_y_deg = in.number(v["fov_y_deg"], "camera.fov_y_deg");
+  if (const std::optional<Element> up = Fields::find(v, "up"))
+    camera.up = in.vec3(*up, "camera.up");
+  if (const std::optional<Element> fov_y_deg = Fields::find(v, "fov_y_deg")) {
+    camera.fov_y_deg = in.number(*fov_y_deg, "camera.fov_y_deg");
     if (!(camera.fov_y_deg > 0 && camera.fov_y_deg < 180)) {
       in.fail("camera.fov_y_deg", "must be in (0, 180) degrees");
     }
   }
-  if (v.contains("width")) camera.width = in.integer(v["width"], "camera.width", 1, 16384);
-  if (v.contains("height")) camera.height = in.integer(v["height"], "camera.height", 1, 16384);
+  if (const std::optional<Element> width = Fields::find(v, "width"))
+    camera.width = in.integer(*width, "camera.width", 1, 16384);
+  if (const std::optional<Element> height = Fields::find(v, "height"))
+    camera.height = in.integer(*height, "camera.height", 1, 16384);
 
   if (camera.eye == camera.look_at)
     in.fail("camera.look_at", "equals camera.eye: there is no view direction");
@@ -68,7 +74,7 @@ Camera read_camera(const Fields& in, const Json& v) {
   return camera;
 }
 
-Light read_light(const Fields& in, const Json& v, const std::string& path) {
+Light read_light(const Fields& in, Element v, const std::string& path) {
   in.expect_object(v, path);
   Light light;
   const std::string type = in.string(in.required(v, "type", path), child(path, "type"));
@@ -79,7 +85,7 @@ Light read_light(const Fields& in, const Json& v, const std::string& path) {
   } else if (type == "directional") {
     light.type = LightType::directional;
     for (const char* key : {"dec_begin", "light_end", "decrease"}) {
-      if (v.contains(key)) {
+      if (Fields::find(v, key)) {
         in.fail(child(path, key),
                 std::string("'") + key + "' means nothing for a directional light");
       }
@@ -90,13 +96,14 @@ Light read_light(const Fields& in, const Json& v, const std::string& path) {
     in.fail(child(path, "type"),
             "unknown light type '" + type + "'; expected point or directional");
   }
-  if (v.contains("intensity")) light.intensity = in.rgb(v["intensity"], child(path, "intensity"));
-  if (v.contains("dec_begin")) {
-    light.dec_begin = in.number(v["dec_begin"], child(path, "dec_begin"));
+  if (const std::optional<Element> intensity = Fields::find(v, "intensity"))
+    light.intensity = in.rgb(*intensity, child(path, "intensity"));
+  if (const std::optional<Element> dec_begin = Fields::find(v, "dec_begin")) {
+    light.dec_begin = in.number(*dec_begin, child(path, "dec_begin"));
     if (light.dec_begin < 0) in.fail(child(path, "dec_begin"), "must be >= 0");
   }
-  if (v.contains("light_end")) {
-    const double end = in.number(v["light_end"], child(path, "light_end"));
+  if (const std::optional<Element> light_end = Fields::find(v, "light_end")) {
+    const double end = in.number(*light_end, child(path, "light_end"));
     if (!(end > 0)) in.fail(child(path, "light_end"), "must be > 0");
     if (end > kMaxCoordinate)
       in.fail(child(path, "light_end"),
@@ -105,20 +112,20 @@ Light read_light(const Fields& in, const Json& v, const std::string& path) {
     if (end < light.dec_begin) in.fail(child(path, "light_end"), "must be >= dec_begin");
     light.light_end = end;
   }
-  if (v.contains("decrease")) {
+  if (const std::optional<Element> decrease = Fields::find(v, "decrease")) {
     light.decrease =
-        in.integer(v["decrease"], child(path, "decrease"), 0, std::numeric_limits<int>::max());
+        in.integer(*decrease, child(path, "decrease"), 0, std::numeric_limits<int>::max());
   }
   return light;
 }
 
-Transform read_transform(const Fields& in, const Json& v, const std::string& path) {
+Transform read_transform(const Fields& in, Element v, const std::string& path) {
   in.expect_object(v, path);
   in.check_keys(v, path, {"scale", "rotate_deg", "translate"});
   Transform transform;
-  if (v.contains("scale")) {
+  if (const std::optional<Element> scale = Fields::find(v, "scale")) {
     const std::string at = child(path, "scale");
-    const Json& s = v["scale"];
+    Element s = *scale;
     if (s.is_number()) {
       const double k = in.number(s, at);
       transform.scale = {k, k, k};
@@ -131,57 +138,58 @@ Transform read_transform(const Fields& in, const Json& v, const std::string& pat
       in.fail(at, "must not be zero");
     }
   }
-  if (v.contains("rotate_deg"))
-    transform.rotate_deg = in.vec3(v["rotate_deg"], child(path, "rotate_deg"));
-  if (v.contains("translate"))
-    transform.translate = in.vec3(v["translate"], child(path, "translate"));
+  if (const std::optional<Element> rotate_deg = Fields::find(v, "rotate_deg"))
+    transform.rotate_deg = in.vec3(*rotate_deg, child(path, "rotate_deg"));
+  if (const std::optional<Element> translate = Fields::find(v, "translate"))
+    transform.translate = in.vec3(*translate, child(path, "translate"));
   return transform;
 }
 
-PolygonSoup read_inline_polygons(const Fields& in, const Json& v, const std::string& path) {
+PolygonSoup read_inline_polygons(const Fields& in, Element v, const std::string& path) {
   in.expect_object(v, path);
   in.check_keys(v, path, {"vertices", "faces"});
   PolygonSoup soup;
   const std::string vertices_path = child(path, "vertices");
-  const Json& vertices = in.array(in.required(v, "vertices", path), vertices_path);
+  const Array vertices = in.array(in.required(v, "vertices", path), vertices_path);
   soup.vertices.reserve(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    soup.vertices.push_back(in.vec3(vertices[i], item(vertices_path, i)));
+  for (const Element vertex : vertices) {
+    const std::optional<Vec3> p = Fields::try_vec3(vertex);
+    soup.vertices.push_back(p ? *p : in.vec3(vertex, item(vertices_path, soup.vertices.size())));
+  }
   const std::string faces_path = child(path, "faces");
-  const Json& faces = in.array(in.required(v, "faces", path), faces_path);
-  if (faces.empty()) in.fail(faces_path, "empty mesh: no polygon");
+  const Array faces = in.array(in.required(v, "faces", path), faces_path);
+  if (faces.begin() == faces.end()) in.fail(faces_path, "empty mesh: no polygon");
   const auto max_index = static_cast<std::int64_t>(soup.vertices.size()) - 1;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const std::string face_path = item(faces_path, f);
-    const Json& face = in.array(faces[f], face_path);
-    if (face.size() < 3) {
-      in.fail(face_path,
-              "face has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
-    }
-    if (face.size() > kMaxPolygonVertices) in.fail(face_path, polygon_too_large(face.size()));
+  soup.polygons.reserve(faces.size());
+  for (const Element face_value : faces) {
+    const auto face_path = [&] { return item(faces_path, soup.polygons.size()); };
+    json::Array face;
+    if (face_value.get_array().get(face)) in.array(face_value, face_path());  // throws
+    const std::size_t size = face.size();
+    if (size < 3)
+      in.fail(face_path(), "face has " + std::to_string(size) + " vertices; at least 3 are needed");
+    if (size > kMaxPolygonVertices) in.fail(face_path(), polygon_too_large(size));
     Polygon polygon;
-    polygon.reserve(face.size());
-    for (std::size_t k = 0; k < face.size(); ++k) {
-      const std::string index_path = item(face_path, k);
-      const Json& index = face[k];
-      if (!index.is_number_integer()) in.fail(index_path, "expected a vertex index (an integer)");
-      const bool in_range =
-          index.is_number_unsigned()
-              ? max_index >= 0 &&
-                    index.get<std::uint64_t>() <= static_cast<std::uint64_t>(max_index)
-              : index.get<std::int64_t>() >= 0 && index.get<std::int64_t>() <= max_index;
-      if (!in_range) {
-        in.fail(index_path, "vertex index " + index.dump() + " out of range: " +
+    polygon.reserve(size);
+    for (const Element index : face) {
+      std::int64_t k = -1;
+      if (index.get_int64().get(k) != simdjson::SUCCESS || k < 0 || k > max_index) {
+        const std::string index_path = item(face_path(), polygon.size());
+        if (!index.is_int64() && !index.is_uint64())
+          in.fail(index_path, "expected a vertex index (an integer)");
+        const std::string value = index.is_int64() ? std::to_string(json::as_int64(index))
+                                                   : std::to_string(json::as_uint64(index));
+        in.fail(index_path, "vertex index " + value + " out of range: " +
                                 std::to_string(soup.vertices.size()) + " vertices");
       }
-      polygon.push_back(static_cast<std::uint32_t>(index.get<std::uint64_t>()));
+      polygon.push_back(static_cast<std::uint32_t>(k));
     }
     soup.polygons.push_back(std::move(polygon));
   }
   return soup;
 }
 
-Model read_model(const Fields& in, const Json& v, std::size_t index,
+Model read_model(const Fields& in, Element v, std::size_t index,
                  std::vector<std::filesystem::path>& inputs) {
   const std::string path = item("models", index);
   in.expect_object(v, path);
@@ -189,29 +197,33 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
                 {"name", "mesh", "polygons", "color", "specular", "shininess", "casts_shadows",
                  "receives", "transform"});
   Model model;
-  model.name = v.contains("name") ? in.string(v["name"], child(path, "name"))
-                                  : "model" + std::to_string(index);
-  if (v.contains("color")) model.color = in.rgb(v["color"], child(path, "color"));
-  if (v.contains("specular")) model.specular = in.rgb(v["specular"], child(path, "specular"));
-  if (v.contains("shininess")) {
-    model.shininess = in.number(v["shininess"], child(path, "shininess"));
+  const std::optional<Element> name = Fields::find(v, "name");
+  model.name = name ? in.string(*name, child(path, "name")) : "model" + std::to_string(index);
+  if (const std::optional<Element> color = Fields::find(v, "color"))
+    model.color = in.rgb(*color, child(path, "color"));
+  if (const std::optional<Element> specular = Fields::find(v, "specular"))
+    model.specular = in.rgb(*specular, child(path, "specular"));
+  if (const std::optional<Element> shininess = Fields::find(v, "shininess")) {
+    model.shininess = in.number(*shininess, child(path, "shininess"));
     if (!(model.shininess >= 1 && model.shininess <= 10000))
       in.fail(child(path, "shininess"), "must be in [1, 10000]");
   }
-  if (v.contains("casts_shadows"))
-    model.casts_shadows = in.boolean(v["casts_shadows"], child(path, "casts_shadows"));
-  if (v.contains("receives")) model.receives = in.boolean(v["receives"], child(path, "receives"));
+  if (const std::optional<Element> casts_shadows = Fields::find(v, "casts_shadows"))
+    model.casts_shadows = in.boolean(*casts_shadows, child(path, "casts_shadows"));
+  if (const std::optional<Element> receives = Fields::find(v, "receives"))
+    model.receives = in.boolean(*receives, child(path, "receives"));
   Transform transform;
-  if (v.contains("transform"))
-    transform = read_transform(in, v["transform"], child(path, "transform"));
+  const std::optional<Element> transform_field = Fields::find(v, "transform");
+  if (transform_field) transform = read_transform(in, *transform_field, child(path, "transform"));
 
-  const bool has_mesh = v.contains("mesh");
-  const bool has_polygons = v.contains("polygons");
-  if (has_mesh == has_polygons) in.fail(path, "needs exactly one of 'mesh' or 'polygons'");
+  const std::optional<Element> mesh_field = Fields::find(v, "mesh");
+  const std::optional<Element> polygons = Fields::find(v, "polygons");
+  const bool has_mesh = mesh_field.has_value();
+  if (has_mesh == polygons.has_value()) in.fail(path, "needs exactly one of 'mesh' or 'polygons'");
   PolygonSoup soup;
   if (has_mesh) {
     const std::string mesh_path = child(path, "mesh");
-    const std::string mesh = in.string(v["mesh"], mesh_path);
+    const std::string mesh = in.string(*mesh_field, mesh_path);
     if (mesh.empty()) in.fail(mesh_path, "empty mesh path");
     try {
       soup = read_polygon_soup(in.file().parent_path() / mesh);
@@ -220,7 +232,7 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
       in.fail(mesh_path, error.what());  // the mesh reader's message names the mesh file and line
     }
   } else {
-    soup = read_inline_polygons(in, v["polygons"], child(path, "polygons"));
+    soup = read_inline_polygons(in, *polygons, child(path, "polygons"));
   }
 
   model.vertices.reserve(soup.vertices.size());
@@ -232,9 +244,9 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
   for (std::size_t k = 0; k < model.vertices.size(); ++k) {
     if (within_coordinate_range(model.vertices[k])) continue;
     // Name what put it there: the transform, else the vertex as given.
-    const std::string at = v.contains("transform") ? child(path, "transform")
-                           : has_mesh              ? child(path, "mesh")
-                                      : item(child(child(path, "polygons"), "vertices"), k);
+    const std::string at = transform_field ? child(path, "transform")
+                           : has_mesh      ? child(path, "mesh")
+                                           : item(child(child(path, "polygons"), "vertices"), k);
     in.fail(at, "vertex " + std::to_string(k) + " " + Fields::out_of_range(model.vertices[k]));
   }
   model.polygons = std::move(soup.polygons);
@@ -246,27 +258,32 @@ Model read_model(const Fields& in, const Json& v, std::size_t index,
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
                   const SceneLoadOptions& options) {
   const std::string name = file.string();
-  const Json root = json::parse_located(json_text, name);
+  const json::Document document(json_text, name);
+  const Element root = document.root();
   const Fields in(file);
   if (!root.is_object()) in.fail("", "a scene must be a JSON object");
   in.check_keys(root, "", {"camera", "ambient", "lights", "models"});
 
   Scene scene;
   scene.source = file;
-  if (root.contains("camera") || options.require_camera)
+  if (Fields::find(root, "camera") || options.require_camera)
     scene.camera = read_camera(in, in.required(root, "camera", ""));
   else
     scene.has_camera = false;
-  if (root.contains("ambient")) scene.ambient = in.rgb(root["ambient"], "ambient");
-  if (root.contains("lights")) {
-    const Json& lights = in.array(root["lights"], "lights");
-    for (std::size_t i = 0; i < lights.size(); ++i)
-      scene.lights.push_back(read_light(in, lights[i], item("lights", i)));
+  if (const std::optional<Element> ambient = Fields::find(root, "ambient"))
+    scene.ambient = in.rgb(*ambient, "ambient");
+  if (const std::optional<Element> lights = Fields::find(root, "lights")) {
+    std::size_t i = 0;
+    for (const Element light : in.array(*lights, "lights"))
+      scene.lights.push_back(read_light(in, light, item("lights", i++)));
   }
-  const Json& models = in.array(in.required(root, "models", ""), "models");
-  if (models.empty()) in.fail("models", "a scene needs at least one model");
-  for (std::size_t i = 0; i < models.size(); ++i)
-    scene.models.push_back(read_model(in, models[i], i, scene.inputs));
+  const Array models = in.array(in.required(root, "models", ""), "models");
+  if (models.begin() == models.end()) in.fail("models", "a scene needs at least one model");
+  std::size_t i = 0;
+  for (const Element model : models) {
+    scene.models.push_back(read_model(in, model, i, scene.inputs));
+    ++i;
+  }
   return scene;
 }
 

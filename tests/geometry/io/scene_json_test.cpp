@@ -6,8 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <random>
 #include <string>
+#include <vector>
 
 namespace umbra::geometry {
 namespace {
@@ -120,6 +126,116 @@ TEST(SceneIo, MalformedJsonReportsLineAndColumn) {
 TEST(SceneIo, DuplicateKeyIsAnError) {
   EXPECT_EQ(scene_error(std::string("{") + kCamera + ", \"models\": [], \"models\": []}"),
             kFile + ": models: duplicate field 'models'");
+}
+
+TEST(SceneIo, DuplicateKeyIsAnErrorAtAnyDepth) {
+  // simdjson keeps both; the field checks refuse the second by its path.
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "point", "position": [0, 1, 0], "position": [0, 2, 0]}])")),
+      kFile + ": lights[0].position: duplicate field 'position'");
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]],
+                                         "faces": [[0,1,2]], "faces": [[0,1,2]]}}])")),
+            kFile + ": models[0].polygons.faces: duplicate field 'faces'");
+}
+
+TEST(SceneIo, IntegersBeyond64BitsAreRefusedByPath) {
+  // nlohmann-json would read 2^64 as a double, simdjson not at all: neither
+  // silently, here.
+  EXPECT_EQ(scene_error(scene(R"([{"type": "point", "position": [0, 18446744073709551616, 0]}])")),
+            kFile +
+                ": lights[0].position[1]: integer 18446744073709551616 does not fit in 64 bits; "
+                "write it with a decimal point or an exponent if a rounded double is meant");
+  // The largest unsigned 64-bit integer is a number like any other.
+  EXPECT_EQ(parse_scene(scene(R"([{"type": "point", "position": [0, 18446744073709551615, 0]}])"),
+                        kScenes / "s.json")
+                .lights[0]
+                .position.y,
+            18446744073709551615.0);
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,18446744073709551615]]}}])")),
+      kFile +
+          ": models[0].polygons.faces[0][2]: vertex index 18446744073709551615 out of range: 3 "
+          "vertices");
+  EXPECT_EQ(
+      scene_error(scene(
+          "[]",
+          R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2.0]]}}])")),
+      kFile + ": models[0].polygons.faces[0][2]: expected a vertex index (an integer)");
+}
+
+TEST(SceneIo, NumbersReadAsStrtodReadsThem) {
+  // Coordinates are exact input: the parser must round every decimal as
+  // strtod does (correctly). Halfway cases, subnormals, underflow to 0, long
+  // mantissas, and seeded random doubles at 17 digits within ±2^500 (the
+  // coordinate range).
+  std::vector<std::string> texts = {"0.1",
+                                    "2.2250738585072011e-308",
+                                    "4.9e-324",
+                                    "2.4e-324",
+                                    "1e-400",
+                                    "3.2733906078961418e150",
+                                    "9007199254740993",
+                                    "9007199254740992.5",
+                                    "0.30000000000000004441",
+                                    "123456789012345678901234567890e-20",
+                                    "-0.0",
+                                    "-0",
+                                    "1.00000000000000011102230246251565404236316680908203125",
+                                    "1.000000000000000111022302462515654042363166809082031251"};
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 300; ++i) {
+    double d;
+    do {
+      const std::uint64_t bits = rng();
+      std::memcpy(&d, &bits, sizeof d);
+    } while (!(std::fabs(d) < 0x1p500));
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", d);
+    texts.push_back(text);
+  }
+  std::string vertices;
+  for (const std::string& t : texts) vertices += "[" + t + ",0,0],";
+  vertices.pop_back();
+  const Scene s = parse_scene(
+      scene("[]", R"([{"polygons": {"vertices": [)" + vertices + R"(], "faces": [[0,1,2]]}}])"),
+      kScenes / "s.json");
+  ASSERT_EQ(s.models[0].vertices.size(), texts.size());
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const double expected = std::strtod(texts[i].c_str(), nullptr);
+    const double got = s.models[0].vertices[i].x;
+    // == (not the bits): the identity transform's + 0 turns -0 into 0.
+    EXPECT_EQ(got, expected) << texts[i];
+  }
+}
+
+TEST(SceneIo, NestingDeeperThanTheLimitIsRefused) {
+  const std::string deep = std::string(2000, '[') + std::string(2000, ']');
+  EXPECT_EQ(
+      scene_error(scene(deep)),
+      kFile + ": JSON nesting too deep: 2001 levels; umbra reads scene files of at most 1024");
+  // 1,024 levels in all are read (and refused for what they hold).
+  const std::string fits = std::string(1021, '[') + std::string(1021, ']');
+  EXPECT_EQ(scene_error(scene("[" + fits + "]")),
+            kFile + ": lights[0]: expected an object, found an array");
+}
+
+TEST(SceneIo, BadVertexInALargeArrayIsNamed) {
+  std::string vertices;
+  for (int i = 0; i < 1000; ++i) {
+    vertices += '[';  // (one piece at a time: GCC 12 warns falsely on "[" + ...)
+    vertices += std::to_string(i);
+    vertices += ",0,0],";
+  }
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [)" + vertices +
+                                        R"([0,"y",0]], "faces": [[0,1,2]]}}])")),
+            kFile + ": models[0].polygons.vertices[1000][1]: expected a number, found a string");
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [)" + vertices +
+                                        R"([0,0]], "faces": [[0,1,2]]}}])")),
+            kFile +
+                ": models[0].polygons.vertices[1000]: expected an array of 3 numbers, found an "
+                "array of 2");
 }
 
 TEST(SceneIo, WrongTypeNamesField) {
