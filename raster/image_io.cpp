@@ -1,4 +1,5 @@
 #include <raster/exr_layout.h>
+#include <raster/image_codec.h>
 #include <raster/image_io.h>
 #include <raster/library_versions.h>
 #include <raster/shading.h>
@@ -6,8 +7,6 @@
 #include <util/input_error.h>
 #include <util/input_file.h>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -60,54 +59,41 @@ std::uint8_t quantize(float v) {
   return static_cast<std::uint8_t>(std::lround(v * 255.0f));
 }
 
-/// Records the first failure: OpenImageIO's text, or a placeholder when it
-/// gave none.
-void note_failure(bool ok, std::string& error, const std::string& what) {
-  if (!ok && error.empty()) error = what.empty() ? "unknown OpenImageIO error" : what;
-}
-
-/// Encodes one image of `spec`, its pixels given by `write` (which returns
-/// false on failure), into memory in the format of `path`'s extension, then
-/// writes the bytes all or nothing (util/atomic_files.h: every write,
-/// fsync and close checked). OpenImageIO's PNG writer does not report a
-/// failed fwrite (PLATFORM-NOTES.md): on a full disk it wrote a truncated
-/// file and said it succeeded, so no image goes to a file through it.
-template <class Write>
-void write_atomically(const fs::path& path, const OIIO::ImageSpec& spec, Write&& write) {
-  const char* format = kind_of(path) == ImageKind::png ? "png" : "openexr";
+/// Encodes one image (image_codec.h: in memory, by the OpenImageIO module)
+/// in the format of `path`'s extension, then writes the bytes all or
+/// nothing (util/atomic_files.h: every write, fsync and close checked).
+/// OpenImageIO's PNG writer does not report a failed fwrite
+/// (PLATFORM-NOTES.md): on a full disk it wrote a truncated file and said it
+/// succeeded, so no image goes to a file through it.
+void write_atomically(const fs::path& path, const codec::Header& header, codec::Pixels pixels,
+                      int block_rows, const codec::FillRows& fill) {
+  const codec::Format format =
+      kind_of(path) == ImageKind::png ? codec::Format::png : codec::Format::openexr;
   std::vector<unsigned char> encoded;
   std::string error;
-  {
-    OIIO::Filesystem::IOVecOutput memory(encoded);
-    auto out = OIIO::ImageOutput::create(format);
-    if (!out) {
-      const std::string why = OIIO::geterror();
-      note_failure(false, error, why.empty() ? "no OpenImageIO writer for this format" : why);
-    } else {
-      out->set_ioproxy(&memory);
-      bool ok = out->open(path.string(), spec);
-      if (ok) ok = write(*out);
-      const bool closed = out->close();
-      note_failure(ok && closed, error, out->geterror());
-    }
-  }
-  if (!error.empty()) {
-    // OpenImageIO's messages may span lines; the CLI prints one line.
-    error = error.substr(0, error.find('\n'));
+  if (!codec::functions().encode(format, header, pixels, block_rows, fill, encoded, error))
     throw util::InputError(path.string(), "cannot write image: " + error);
-  }
   util::write_all_or_nothing(
       path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
+}
+
+/// An 8-bit RGB image's header: no windows of its own.
+codec::Header rgb_header(int width, int height) {
+  codec::Header header;
+  header.width = header.full_width = width;
+  header.height = header.full_height = height;
+  header.channels = {"R", "G", "B"};
+  return header;
 }
 
 void write_beauty_png(const Frame& frame, const fs::path& path) {
   const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
   std::vector<std::uint8_t> bytes(n * 3);
   for (std::size_t k = 0; k < n * 3; ++k) bytes[k] = quantize(encode_srgb(frame.beauty[k]));
-  OIIO::ImageSpec spec(frame.width, frame.height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  write_atomically(path, spec, [&](OIIO::ImageOutput& out) {
-    return out.write_image(spec.format, bytes.data());
+  codec::Header header = rgb_header(frame.width, frame.height);
+  header.attributes = {{"oiio:ColorSpace", "sRGB"}};
+  write_atomically(path, header, codec::Pixels::uint8, 0, [&](int, int, void* out) {
+    std::copy(bytes.begin(), bytes.end(), static_cast<std::uint8_t*>(out));
   });
 }
 
@@ -119,25 +105,20 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
   const std::size_t lights = frame.lights();
   const std::size_t channels = 3 + 2 * lights + 1;
 
-  OIIO::ImageSpec spec(frame.width, rows.size(), static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
-  spec.y = rows.begin;
-  spec.full_x = 0;
-  spec.full_y = 0;
-  spec.full_width = frame.width;
-  spec.full_height = frame.height;
+  codec::Header header;
+  header.width = header.full_width = frame.width;
+  header.y = rows.begin;
+  header.height = rows.size();
+  header.full_height = frame.height;
   // Our order; OpenEXR itself stores channels sorted by name, which is why
   // read_shadow_channels looks them up by name.
-  spec.channelnames = channel_names(lights);
-  spec.alpha_channel = -1;
-  spec.z_channel = -1;
-  spec.attribute("oiio:ColorSpace", "Linear");
-  spec.attribute("compression", "zip");
-  // No time stamp: the same render gives the same bytes (OpenEXR writers
-  // otherwise record the current time).
-  spec.attribute("DateTime", "");
+  header.channels = channel_names(lights);
+  // No time stamp (DateTime empty): the same render gives the same bytes
+  // (OpenEXR writers otherwise record the current time).
+  header.attributes = {{"oiio:ColorSpace", "Linear"}, {"compression", "zip"}, {"DateTime", ""}};
   if (tile) {
-    spec.attribute(kTileAttribute, fmt::format("{}/{}", tile->index, tile->count));
-    spec.attribute(kJobAttribute, tile->job);
+    header.attributes.emplace_back(kTileAttribute, fmt::format("{}/{}", tile->index, tile->count));
+    header.attributes.emplace_back(kJobAttribute, tile->job);
   }
 
   // The channels are interleaved a block of rows at a time: the whole
@@ -146,26 +127,22 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
   // four of OpenEXR's 16-row zip blocks; the file is the same bytes.
   constexpr int kBlockRows = 64;
   const std::size_t width = static_cast<std::size_t>(frame.width);
-  std::vector<float> block(static_cast<std::size_t>(kBlockRows) * width * channels);
-  write_atomically(path, spec, [&](OIIO::ImageOutput& out) {
-    for (int y0 = rows.begin; y0 < rows.end; y0 += kBlockRows) {
-      const int y1 = std::min(rows.end, y0 + kBlockRows);
-      for (std::size_t p = static_cast<std::size_t>(y0) * width;
-           p < static_cast<std::size_t>(y1) * width; ++p) {
-        float* px = &block[(p - static_cast<std::size_t>(y0) * width) * channels];
-        px[0] = frame.beauty[p * 3 + 0];
-        px[1] = frame.beauty[p * 3 + 1];
-        px[2] = frame.beauty[p * 3 + 2];
-        for (std::size_t i = 0; i < lights; ++i) {
-          px[3 + i] = frame.shadow[i][p];
-          px[3 + lights + i] = frame.count[i][p];
-        }
-        px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
-      }
-      if (!out.write_scanlines(y0, y1, 0, OIIO::TypeDesc::FLOAT, block.data())) return false;
-    }
-    return true;
-  });
+  write_atomically(path, header, codec::Pixels::float32, kBlockRows,
+                   [&](int y0, int y1, void* out) {
+                     float* const block = static_cast<float*>(out);
+                     for (std::size_t p = static_cast<std::size_t>(y0) * width;
+                          p < static_cast<std::size_t>(y1) * width; ++p) {
+                       float* px = &block[(p - static_cast<std::size_t>(y0) * width) * channels];
+                       px[0] = frame.beauty[p * 3 + 0];
+                       px[1] = frame.beauty[p * 3 + 1];
+                       px[2] = frame.beauty[p * 3 + 2];
+                       for (std::size_t i = 0; i < lights; ++i) {
+                         px[3 + i] = frame.shadow[i][p];
+                         px[3 + lights + i] = frame.count[i][p];
+                       }
+                       px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
+                     }
+                   });
 }
 
 /// Buffer sizes that do not match width x height are a bug in the caller,
@@ -241,22 +218,16 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
                            "channels of an OpenEXR file from `umbra render -o NAME.exr`",
                            format, named_exr ? ", not the OpenEXR its name says" : ""));
   }
-  auto in = OIIO::ImageInput::create("openexr");
-  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-  OIIO::ImageSpec spec;
-  if (!in || !in->set_ioproxy(&memory) || !in->open(where, spec)) {
-    std::string error = in ? in->geterror() : OIIO::geterror();
-    error = error.substr(0, error.find('\n'));
-    throw util::InputError(
-        where, "cannot read image: " + (error.empty() ? std::string("unknown error") : error));
-  }
-  spec = in->spec();
+  std::string error;
+  const std::unique_ptr<codec::Reader> in = codec::functions().open_exr(bytes, where, error);
+  if (!in) throw util::InputError(where, "cannot read image: " + error);
+  const codec::Header& spec = in->header();
 
   // Channel position by light index; std::map keeps indices sorted whatever
   // order the file lists them in (EXR sorts "shadow.10" before "shadow.2").
   std::map<long, int> by_light;
-  for (int c = 0; c < spec.nchannels; ++c) {
-    const long index = shadow_index(spec.channelnames[c]);
+  for (int c = 0; c < static_cast<int>(spec.channels.size()); ++c) {
+    const long index = shadow_index(spec.channels[c]);
     if (index >= 0) by_light.emplace(index, c);
   }
   if (!by_light.contains(0))
@@ -311,11 +282,9 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
       static_cast<int>(std::clamp<std::size_t>(kBlockFloats / (width * channels_read), 1, 64));
   std::vector<float> block(static_cast<std::size_t>(rows) * width * channels_read);
   const auto read = [&](int y0, int y1, int c0, int c1) {
-    if (!in->read_scanlines(0, 0, y0, y1, 0, c0, c1, OIIO::TypeDesc::FLOAT, block.data())) {
-      std::string error = in->geterror();
-      error = error.substr(0, error.find('\n'));
-      throw util::InputError(where, "cannot read image: " + error);
-    }
+    std::string why;
+    if (!in->read(y0, y1, c0, c1, block.data(), why))
+      throw util::InputError(where, "cannot read image: " + why);
   };
   for (int y0 = 0; y0 < spec.height; y0 += rows) {
     const int y1 = std::min(spec.height, y0 + rows);
@@ -342,10 +311,10 @@ void write_rgb_png(const fs::path& path, int width, int height, const std::vecto
         fmt::format("write_rgb_png: {} floats for a {}x{} image", rgb.size(), width, height));
   std::vector<std::uint8_t> bytes(rgb.size());
   std::transform(rgb.begin(), rgb.end(), bytes.begin(), quantize);
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  write_atomically(path, spec, [&](OIIO::ImageOutput& out) {
-    return out.write_image(spec.format, bytes.data());
-  });
+  write_atomically(path, rgb_header(width, height), codec::Pixels::uint8, 0,
+                   [&](int, int, void* out) {
+                     std::copy(bytes.begin(), bytes.end(), static_cast<std::uint8_t*>(out));
+                   });
 }
 
 }  // namespace umbra::raster
@@ -355,8 +324,9 @@ namespace umbra::raster {
 geometry::LibraryVersion openimageio_version() {
   // Both from the same packed number: OIIO_VERSION_STRING carries a
   // fourth, tweak component (2.4.7.1) that the library's number does not.
-  return {"OpenImageIO", geometry::decimal_packed_version(OIIO_VERSION),
-          geometry::decimal_packed_version(OIIO::openimageio_version())};
+  const codec::Functions& oiio = codec::functions();
+  return {"OpenImageIO", geometry::decimal_packed_version(oiio.built_version()),
+          geometry::decimal_packed_version(oiio.running_version())};
 }
 
 }  // namespace umbra::raster

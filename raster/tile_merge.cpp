@@ -1,11 +1,10 @@
 // umbra merge: the frame from the tiles of `umbra render --tile I/N`.
 #include <raster/exr_layout.h>
+#include <raster/image_codec.h>
 #include <raster/image_io.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -34,8 +33,7 @@ namespace {
 struct TilePart {
   fs::path path;
   std::string bytes;  ///< the file; the reader below reads from it
-  std::unique_ptr<OIIO::ImageInput> in;
-  std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+  std::unique_ptr<codec::Reader> in;
   TileLabel label;
   int width = 0, height = 0;  ///< the display window: the whole frame
   RowRange rows;
@@ -52,17 +50,12 @@ TilePart open_tile(const fs::path& path) {
     throw InputError(where, fmt::format("is {} by its content; a tile is the OpenEXR of "
                                         "`umbra render --tile I/N -o NAME.exr`",
                                         content_format(part.bytes)));
-  part.in = OIIO::ImageInput::create("openexr");
-  part.memory =
-      std::make_unique<OIIO::Filesystem::IOMemReader>(part.bytes.data(), part.bytes.size());
-  OIIO::ImageSpec spec;
-  if (!part.in || !part.in->set_ioproxy(part.memory.get()) || !part.in->open(where, spec)) {
-    std::string error = part.in ? part.in->geterror() : OIIO::geterror();
-    error = error.substr(0, error.find('\n'));
-    throw InputError(where, "cannot read image: " + (error.empty() ? "unknown error" : error));
-  }
-  spec = part.in->spec();
-  const std::string tile = spec.get_string_attribute(kTileAttribute);
+  std::string error;
+  part.in = codec::functions().open_exr(part.bytes, where, error);
+  if (!part.in) throw InputError(where, "cannot read image: " + error);
+  const codec::Header& spec = part.in->header();
+  const int nchannels = static_cast<int>(spec.channels.size());
+  const std::string tile = spec.attribute(kTileAttribute);
   const std::size_t slash = tile.find('/');
   const auto number = [](std::string_view text, std::uint64_t& value) {
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -73,8 +66,8 @@ TilePart open_tile(const fs::path& path) {
       !number(std::string_view(tile).substr(slash + 1), part.label.count) ||
       part.label.count == 0 || part.label.index >= part.label.count)
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (no umbra:tile I/N)");
-  part.label.job = spec.get_string_attribute(kJobAttribute);
-  if (spec.deep || spec.depth > 1 || spec.nchannels < 4 || (spec.nchannels - 4) % 2 != 0)
+  part.label.job = spec.attribute(kJobAttribute);
+  if (spec.deep || spec.depth > 1 || nchannels < 4 || (nchannels - 4) % 2 != 0)
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (its channels)");
   part.width = spec.full_width;
   part.height = spec.full_height;
@@ -96,16 +89,16 @@ TilePart open_tile(const fs::path& path) {
                                         part.label.index, part.label.count, spec.y,
                                         last_pixel(spec.y, spec.height) + 1, part.rows.begin,
                                         part.rows.end, part.height));
-  part.lights = static_cast<std::size_t>(spec.nchannels - 4) / 2;
+  part.lights = static_cast<std::size_t>(nchannels - 4) / 2;
   const std::vector<std::string> names = channel_names(part.lights);
-  if (static_cast<std::size_t>(spec.nchannels) != names.size())
+  if (static_cast<std::size_t>(nchannels) != names.size())
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (its channels)");
-  for (int c = 0; c < spec.nchannels; ++c) {
-    const auto it = std::find(names.begin(), names.end(), spec.channelnames[c]);
+  for (int c = 0; c < nchannels; ++c) {
+    const auto it = std::find(names.begin(), names.end(), spec.channels[c]);
     if (it == names.end() || std::find(part.destination.begin(), part.destination.end(),
                                        it - names.begin()) != part.destination.end())
       throw InputError(where,
-                       fmt::format("channel '{}' is not one of a render's", spec.channelnames[c]));
+                       fmt::format("channel '{}' is not one of a render's", spec.channels[c]));
     part.destination.push_back(static_cast<int>(it - names.begin()));
   }
   return part;
@@ -165,12 +158,9 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
     std::vector<float> block(kBlockRows * width * channels);
     for (int y0 = part.rows.begin; y0 < part.rows.end; y0 += kBlockRows) {
       const int y1 = std::min(part.rows.end, y0 + kBlockRows);
-      if (!part.in->read_scanlines(0, 0, y0, y1, 0, 0, static_cast<int>(channels),
-                                   OIIO::TypeDesc::FLOAT, block.data())) {
-        std::string error = part.in->geterror();
-        throw InputError(part.path.string(),
-                         "cannot read image: " + error.substr(0, error.find('\n')));
-      }
+      std::string error;
+      if (!part.in->read(y0, y1, 0, static_cast<int>(channels), block.data(), error))
+        throw InputError(part.path.string(), "cannot read image: " + error);
       for (std::size_t k = 0; k < static_cast<std::size_t>(y1 - y0) * width; ++k) {
         const std::size_t p = static_cast<std::size_t>(y0) * width + k;
         for (std::size_t c = 0; c < channels; ++c) {

@@ -8,8 +8,8 @@ the project) and fails, naming the chain, when a rule is broken:
 - raster/ never reaches a CGAL or OpenMesh header (it gets plain values and
   exact decisions from geometry/), nor cli/, fuzz/, bench/;
 - the `umbra` executable's sources (cli/) never reach fuzz/ or bench/;
-- OpenImageIO is included by raster/image_io.cpp and its tile reader
-  raster/tile_merge.cpp alone, Embree by
+- OpenImageIO is included by raster/image_codec_oiio.cpp alone (the module
+  loaded on the first image read or written), Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone.
 Usage: check_includes.py SOURCE_DIR   (exit 0 clean, 1 with the violations)
@@ -59,7 +59,7 @@ RULES = [
      "the umbra executable (cli/) never includes fuzz/ or bench/"),
 ]
 ONLY_IN = [
-    ("OpenImageIO/", ("raster/image_io.cpp", "raster/tile_merge.cpp")),
+    ("OpenImageIO/", ("raster/image_codec_oiio.cpp",)),
     ("embree3/", ("raster/methods/",)),
     ("tiny_gltf.h", ("geometry/io/",)),
     ("simdjson.h", ("geometry/io/json_document.h",)),
