@@ -6,17 +6,23 @@
 // With UMBRA_BENCH_DUMP=DIR every benchmark scene is also written there as
 // scene JSON, so that `umbra render` and `umbra validate` can be run on it.
 //
-// Passes: "shadows" (exact volumes), "plain" (the same without shadows) and
-// "map" (Williams' shadow maps, default settings). Counters per run: shadow polygons, exact
-// fallbacks, samples/s (pixels x lights per second), spans/s, (shadow polygon, band) pairs skipped,
-// and the seconds of each phase of the last run. The ratio shadowed/plain is computed by
-// scripts/bench_table.py from the JSON output.
+// Passes: "shadows" (exact volumes), "plain" (the same without shadows),
+// "map" (Williams' shadow maps, default settings), "ray" (Embree's shadow
+// rays), "surface" and "primary" (the volume and the ray method on the scene
+// without lights: umbra's visible-surface pass and Embree's primary rays,
+// each with the ambient term) and "zbuffer" (bench/zbuffer.h, a minimal
+// float z-buffer: the visible-surface baseline). UMBRA_BENCH_THREADS
+// sets every pass's threads (default 0: all; Embree gets the same). Counters per run: shadow
+// polygons, exact fallbacks, samples/s (pixels x lights per second), spans/s, (shadow polygon,
+// band) pairs skipped, and the seconds of each phase of the last run. The ratio shadowed/plain is
+// computed by scripts/bench_table.py from the JSON output.
 #include <fuzz/scene_export.h>
 #include <raster/render.h>
 #include <raster/validate.h>
 #include <util/atomic_files.h>
 
 #include "bench_scene.h"
+#include "zbuffer.h"
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -34,8 +40,12 @@ namespace {
 /// shadows, and Williams' shadow maps at their default settings (the method
 /// whose cost Williams puts at "roughly twice" a plain render).
 raster::RenderOptions pass_options(const std::string& pass) {
-  if (pass == "map") return {.method = raster::Method::map, .threads = 0};
-  return {.method = raster::Method::volume, .threads = 0, .shadows = pass == "shadows"};
+  const char* env = std::getenv("UMBRA_BENCH_THREADS");
+  const auto threads = static_cast<unsigned>(env == nullptr ? 0 : std::max(0, std::atoi(env)));
+  if (pass == "map") return {.method = raster::Method::map, .threads = threads};
+  if (pass == "ray" || pass == "primary")
+    return {.method = raster::Method::ray, .threads = threads};
+  return {.method = raster::Method::volume, .threads = threads, .shadows = pass == "shadows"};
 }
 
 void render_frame(benchmark::State& state, const geometry::Scene& scene,
@@ -65,6 +75,37 @@ void render_frame(benchmark::State& state, const geometry::Scene& scene,
   state.counters["s_raster"] = stats.seconds_raster;
   state.counters["s_raster_prepare"] = stats.seconds_raster_prepare;
   state.counters["s_decide"] = stats.seconds_decide;
+}
+
+const std::vector<std::string> kPasses = {"shadows", "plain",   "map",    "ray",
+                                          "surface", "primary", "zbuffer"};
+
+/// The scene a pass renders: "surface" and "primary" have no lights.
+geometry::Scene pass_scene(const geometry::Scene& scene, const std::string& pass) {
+  geometry::Scene copy = scene;
+  if (pass == "surface" || pass == "primary") copy.lights.clear();
+  return copy;
+}
+
+void zbuffer_frame(benchmark::State& state, const geometry::Scene& scene, bool warm_up) {
+  if (warm_up) zbuffer_render(scene);
+  ZBufferFrame frame;
+  for (auto _ : state) {
+    frame = zbuffer_render(scene);
+    benchmark::DoNotOptimize(frame.id.data());
+  }
+  state.counters["lights"] = static_cast<double>(scene.lights.size());
+  state.counters["triangles"] = static_cast<double>(frame.triangles);
+  state.counters["triangles_skipped"] = static_cast<double>(frame.skipped);
+}
+
+/// One pass of `scene` under the benchmark's state.
+void run_pass(benchmark::State& state, const geometry::Scene& scene, const std::string& pass,
+              bool warm_up) {
+  if (pass == "zbuffer")
+    zbuffer_frame(state, scene, warm_up);
+  else
+    render_frame(state, scene, pass_options(pass), warm_up);
 }
 
 std::vector<std::string> split(const char* text) {
@@ -118,11 +159,11 @@ void dump_scenes() {
 
 void register_benchmarks() {
   const std::string torus = std::string(UMBRA_DATA_DIR) + "/meshes/torus.off";
-  for (const std::string pass : {"shadows", "plain", "map"}) {
-    const geometry::Scene smoke = mesh_on_floor(torus, 2, 160, 90);
+  for (const std::string& pass : kPasses) {
+    const geometry::Scene smoke = pass_scene(mesh_on_floor(torus, 2, 160, 90), pass);
     benchmark::RegisterBenchmark(
         ("Smoke/torus/lights:2/" + pass).c_str(),
-        [smoke, pass](benchmark::State& s) { render_frame(s, smoke, pass_options(pass)); })
+        [smoke, pass](benchmark::State& s) { run_pass(s, smoke, pass, false); })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
   }
@@ -132,11 +173,11 @@ void register_benchmarks() {
       // Load once per (mesh, lights); every pass renders the same scene.
       const geometry::Scene scene = mesh_on_floor(mesh, lights, 1280, 720);
       scenes().emplace_back(stem + "/lights:" + std::to_string(lights), scene);
-      for (const std::string pass : {"shadows", "plain", "map"}) {
+      for (const std::string& pass : kPasses) {
         benchmark::RegisterBenchmark(
             ("Render/" + stem + "/lights:" + std::to_string(lights) + "/" + pass).c_str(),
-            [scene, pass, warmed = false](benchmark::State& s) mutable {
-              render_frame(s, scene, pass_options(pass), !warmed);
+            [scene = pass_scene(scene, pass), pass, warmed = false](benchmark::State& s) mutable {
+              run_pass(s, scene, pass, !warmed);
               warmed = true;
             })
             ->Unit(benchmark::kMillisecond)

@@ -15,17 +15,16 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::filesystem::path file = argv[i];
     const std::string text = umbra::util::read_input_file(file, "scene");
-    benchmark::RegisterBenchmark(("Parse/" + file.filename().string()).c_str(),
-                                 [file, text](benchmark::State& state) {
-                                   for (auto _ : state) {
-                                     umbra::geometry::Scene scene =
-                                         umbra::geometry::parse_scene(text, file);
-                                     benchmark::DoNotOptimize(scene.models.data());
-                                   }
-                                   state.SetBytesProcessed(
-                                       static_cast<std::int64_t>(state.iterations()) *
-                                       static_cast<std::int64_t>(text.size()));
-                                 })
+    benchmark::RegisterBenchmark(
+        ("Parse/" + file.filename().string()).c_str(),
+        [file, text](benchmark::State& state) {
+          for (auto _ : state) {
+            umbra::geometry::Scene scene = umbra::geometry::parse_scene(text, file);
+            benchmark::DoNotOptimize(scene.models.data());
+          }
+          state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
+                                  static_cast<std::int64_t>(text.size()));
+        })
         ->Unit(benchmark::kMillisecond);
   }
   benchmark::RunSpecifiedBenchmarks();

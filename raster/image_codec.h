@@ -19,7 +19,7 @@ namespace umbra::raster::codec {
 /// What an image file says of itself: OpenImageIO's ImageSpec, as much of
 /// it as umbra writes or checks.
 struct Header {
-  int x = 0, y = 0, width = 0, height = 0;  ///< the data window
+  int x = 0, y = 0, width = 0, height = 0;                      ///< the data window
   int full_x = 0, full_y = 0, full_width = 0, full_height = 0;  ///< the display window
   int depth = 1;
   bool deep = false;

@@ -11,10 +11,10 @@ Document::Document(std::string_view text, const std::string& file) {
   const simdjson::error_code error = parser_.parse(text.data(), text.size(), true).get(root_);
   if (!error) return;
   if (error == simdjson::DEPTH_ERROR) {
-    throw util::InputError(file, "JSON nesting too deep: " +
-                                     std::to_string(json_nesting_depth(text)) +
-                                     " levels; umbra reads scene files of at most " +
-                                     std::to_string(kMaxSceneNesting));
+    throw util::InputError(file,
+                           "JSON nesting too deep: " + std::to_string(json_nesting_depth(text)) +
+                               " levels; umbra reads scene files of at most " +
+                               std::to_string(kMaxSceneNesting));
   }
   // Say where: the located pass throws for every error simdjson finds in
   // valid-looking text (syntax, UTF-8, 1e999, integers beyond 64 bits).
