@@ -4,16 +4,6 @@
 
 namespace umbra::geometry {
 
-void Box::extend(const Vec3& p) {
-  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-}
-
-void Box::extend(const Box& b) {
-  extend(b.lo);
-  extend(b.hi);
-}
-
 Box models_bounds(const Scene& scene) {
   Box box;
   for (const Model& m : scene.models)

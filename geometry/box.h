@@ -5,13 +5,22 @@
 #include <geometry/scene.h>
 #include <geometry/vec3.h>
 
+#include <algorithm>
+
 namespace umbra::geometry {
 
 struct Box {
   Vec3 lo{1e308, 1e308, 1e308};
   Vec3 hi{-1e308, -1e308, -1e308};
-  void extend(const Vec3& p);
-  void extend(const Box& b);
+  // Inline: the BVH build calls these n log n times.
+  void extend(const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  void extend(const Box& b) {
+    extend(b.lo);
+    extend(b.hi);
+  }
   Vec3 centre() const { return (lo + hi) * 0.5; }
   bool empty() const { return lo.x > hi.x; }
 };

@@ -81,7 +81,7 @@ HitTriangle hit_triangle(const SceneIndex& index, const SurfaceHit& hit) {
 
 std::optional<SurfaceHit> first_hit(const SceneIndex& index, const SampleRay& ray) {
   std::vector<std::uint32_t> candidates;
-  index.bvh().query_segment(ray.origin, ray.direction, true, 0.0, candidates);
+  index.query_segment(ray.origin, ray.direction, true, 0.0, candidates);
 
   std::vector<Contact> contacts;
   std::vector<std::uint32_t> grazed;  // polygons whose plane holds the ray

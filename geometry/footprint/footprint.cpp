@@ -114,7 +114,7 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
         add_side_segment(plane, box2, e[0], e[1], lp, segments);
       }
       candidates.clear();
-      ctx.index.bvh().query_box(box3, 0.0, candidates);
+      ctx.index.query_box(box3, 0.0, candidates);
       for (std::uint32_t id : candidates) {
         const IndexedPolygon& caster = ctx.index.polygons()[id];
         if (!caster.casts_shadows) continue;

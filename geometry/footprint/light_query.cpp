@@ -60,7 +60,7 @@ std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x
   scratch.clear();
   // The BVH pads its boxes by 1e-9 of the coordinates' size, far more than
   // xd's rounding.
-  index.bvh().query_segment(xd, light.v, !light.finite, 0.0, scratch);
+  index.query_segment(xd, light.v, !light.finite, 0.0, scratch);
   std::sort(scratch.begin(), scratch.end());
   const Point3 far =
       light.finite ? exact_point(light.v) : x + Epeck::Vector_3(light.v.x, light.v.y, light.v.z);

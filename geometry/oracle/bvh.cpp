@@ -10,8 +10,13 @@ Bvh::Bvh(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
   order_.resize(boxes_.size());
   for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
   if (!boxes_.empty()) {
+    // The centres once, not in every comparison of every level's split
+    // (the same values: the same expression).
+    centres_.reserve(boxes_.size());
+    for (const Box& b : boxes_) centres_.push_back(b.centre());
     nodes_.reserve(2 * boxes_.size());
     build(0, static_cast<std::uint32_t>(boxes_.size()));
+    centres_ = {};
   }
 }
 
@@ -21,7 +26,7 @@ std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
   Box box, centres;
   for (std::uint32_t i = begin; i < end; ++i) {
     box.extend(boxes_[order_[i]]);
-    centres.extend(boxes_[order_[i]].centre());
+    centres.extend(centres_[order_[i]]);
   }
   nodes_[index].box = box;
   constexpr std::uint32_t kLeafSize = 4;
@@ -34,10 +39,9 @@ std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
   const int axis =
       extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
   const std::uint32_t mid = begin + (end - begin) / 2;
-  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                   [&](std::uint32_t a, std::uint32_t b) {
-                     return boxes_[a].centre()[axis] < boxes_[b].centre()[axis];
-                   });
+  std::nth_element(
+      order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+      [&](std::uint32_t a, std::uint32_t b) { return centres_[a][axis] < centres_[b][axis]; });
   build(begin, mid);  // the left child is always index + 1
   const std::uint32_t right = build(mid, end);
   nodes_[index].first = right;
@@ -84,6 +88,20 @@ bool overlaps(const Box& a, const Box& b, double slack) {
 }
 
 }  // namespace
+
+void Bvh::scan_segment(const std::vector<Box>& boxes, const Vec3& from, const Vec3& to,
+                       bool to_is_direction, double slack, std::vector<std::uint32_t>& out) {
+  const Vec3 dir = to_is_direction ? to : to - from;
+  const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    if (meets(boxes[i], from, dir, s_max, slack)) out.push_back(i);
+}
+
+void Bvh::scan_box(const std::vector<Box>& boxes, const Box& box, double slack,
+                   std::vector<std::uint32_t>& out) {
+  for (std::uint32_t i = 0; i < boxes.size(); ++i)
+    if (overlaps(boxes[i], box, slack)) out.push_back(i);
+}
 
 void Bvh::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {
   if (nodes_.empty()) return;

@@ -6,7 +6,6 @@
 namespace umbra::geometry {
 
 SceneIndex::SceneIndex(const Scene& scene) : scene_(&scene) {
-  std::vector<Box> boxes;
   for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
     const Model& model = scene.models[m];
     for (std::uint32_t p = 0; p < model.polygons.size(); ++p) {
@@ -14,14 +13,34 @@ SceneIndex::SceneIndex(const Scene& scene) : scene_(&scene) {
       if (surface.shape == PolygonShape::degenerate) continue;  // covers nothing, shadows nothing
       Box box;
       for (std::uint32_t v : model.polygons[p]) box.extend(model.vertices[v]);
-      boxes.push_back(box);
+      boxes_.push_back(box);
       polygons_.push_back({m, p, std::move(surface), model.casts_shadows});
     }
   }
   bounds_ = scene_bounds(scene);
   for (int a = 0; a < 3; ++a)
     magnitude_ = std::max({magnitude_, std::abs(bounds_.lo[a]), std::abs(bounds_.hi[a])});
-  bvh_ = Bvh(std::move(boxes));
+}
+
+const Bvh* SceneIndex::tree() const {
+  if (bvh_->queries.fetch_add(1, std::memory_order_relaxed) < kLinearQueries) return nullptr;
+  std::call_once(bvh_->once, [this] { bvh_->bvh = Bvh(boxes_); });
+  return &bvh_->bvh;
+}
+
+void SceneIndex::query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
+                               std::vector<std::uint32_t>& out) const {
+  if (const Bvh* bvh = tree())
+    bvh->query_segment(from, to, to_is_direction, slack, out);
+  else
+    Bvh::scan_segment(boxes_, from, to, to_is_direction, slack, out);
+}
+
+void SceneIndex::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {
+  if (const Bvh* bvh = tree())
+    bvh->query_box(box, slack, out);
+  else
+    Bvh::scan_box(boxes_, box, slack, out);
 }
 
 }  // namespace umbra::geometry

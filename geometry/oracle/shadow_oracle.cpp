@@ -41,7 +41,7 @@ ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, cons
   const Vec3 approx_h = ray.origin + t * ray.direction;
   const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) + 1e-300;
   std::vector<std::uint32_t> candidates;
-  index.bvh().query_segment(approx_h, lp.v, !lp.finite, slack, candidates);
+  index.query_segment(approx_h, lp.v, !lp.finite, slack, candidates);
 
   for (std::uint32_t pi : candidates) {
     const IndexedPolygon& poly = index.polygons()[pi];
@@ -66,7 +66,7 @@ std::optional<std::vector<std::uint32_t>> odd_crossings(const SceneIndex& index,
   if (lp.finite && lp.v == at) return std::nullopt;  // no segment at all
   const double slack = 1e-12 * index.magnitude() + 1e-300;
   std::vector<std::uint32_t> candidates;
-  index.bvh().query_segment(at, lp.v, !lp.finite, slack, candidates);
+  index.query_segment(at, lp.v, !lp.finite, slack, candidates);
   std::sort(candidates.begin(), candidates.end());
   std::vector<std::uint32_t> odd;
   for (std::uint32_t pi : candidates) {
@@ -95,7 +95,7 @@ std::optional<std::vector<std::uint32_t>> shadowing_polygons(const SceneIndex& i
 bool on_casting_surface(const SceneIndex& index, const Vec3& x) {
   const double slack = 1e-12 * index.magnitude() + 1e-300;
   std::vector<std::uint32_t> candidates;
-  index.bvh().query_segment(x, x, false, slack, candidates);
+  index.query_segment(x, x, false, slack, candidates);
   for (std::uint32_t pi : candidates) {
     const IndexedPolygon& poly = index.polygons()[pi];
     if (!poly.casts_shadows) continue;
