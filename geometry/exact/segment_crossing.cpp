@@ -81,7 +81,7 @@ Crossing cross(const SceneIndex& index, const IndexedPolygon& poly, const HPoint
       return result;
     }
   }
-  for (const FanTriangle& t : poly.surface.triangles) {
+  for (const FanTriangle& t : poly.surface->triangles) {
     const Vec3& a = index.vertex(poly, t.local[0]);
     const HPoint b = HPoint::point(index.vertex(poly, t.local[1]));
     const HPoint c = HPoint::point(index.vertex(poly, t.local[2]));

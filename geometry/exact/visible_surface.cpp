@@ -75,7 +75,7 @@ PlaneMeet meet_plane(const Vec3& a, const Vec3& b, const Vec3& c, const SampleRa
 
 HitTriangle hit_triangle(const SceneIndex& index, const SurfaceHit& hit) {
   const IndexedPolygon& p = index.polygons()[hit.polygon];
-  const FanTriangle& t = p.surface.triangles[hit.triangle];
+  const FanTriangle& t = p.surface->triangles[hit.triangle];
   return {index.vertex(p, t.local[0]), index.vertex(p, t.local[1]), index.vertex(p, t.local[2])};
 }
 
@@ -87,23 +87,23 @@ std::optional<SurfaceHit> first_hit(const SceneIndex& index, const SampleRay& ra
   std::vector<std::uint32_t> grazed;  // polygons whose plane holds the ray
   for (std::uint32_t pi : candidates) {
     const IndexedPolygon& p = index.polygons()[pi];
-    const bool planar = p.surface.shape == PolygonShape::planar;
+    const bool planar = p.surface->shape == PolygonShape::planar;
     if (planar) {
-      const FanTriangle& t0 = p.surface.triangles.front();
+      const FanTriangle& t0 = p.surface->triangles.front();
       const PlaneMeet pm = meet_plane(index.vertex(p, t0.local[0]), index.vertex(p, t0.local[1]),
                                       index.vertex(p, t0.local[2]), ray);
       if (pm == PlaneMeet::in_plane) grazed.push_back(pi);
       if (pm != PlaneMeet::ahead) continue;
       bool parity = false, edge = false;
-      for (const FanTriangle& t : p.surface.triangles) {
+      for (const FanTriangle& t : p.surface->triangles) {
         const TriangleMeet m = meet_triangle(index, p, t, ray, false);
         parity ^= m.claims;
         edge = edge || m.on_edge;
       }
       if (parity || edge) contacts.push_back({pi, 0, parity, edge});
     } else {
-      for (std::uint32_t ti = 0; ti < p.surface.triangles.size(); ++ti) {
-        const FanTriangle& t = p.surface.triangles[ti];
+      for (std::uint32_t ti = 0; ti < p.surface->triangles.size(); ++ti) {
+        const FanTriangle& t = p.surface->triangles[ti];
         const PlaneMeet pm = meet_plane(index.vertex(p, t.local[0]), index.vertex(p, t.local[1]),
                                         index.vertex(p, t.local[2]), ray);
         if (pm == PlaneMeet::in_plane) grazed.push_back(pi);

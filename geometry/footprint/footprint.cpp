@@ -118,7 +118,7 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
       for (std::uint32_t id : candidates) {
         const IndexedPolygon& caster = ctx.index.polygons()[id];
         if (!caster.casts_shadows) continue;
-        for (const FanTriangle& t : caster.surface.triangles)
+        for (const FanTriangle& t : caster.surface->triangles)
           add_piercing_segment(plane, ctx.index.vertex(caster, t.local[0]),
                                ctx.index.vertex(caster, t.local[1]),
                                ctx.index.vertex(caster, t.local[2]), segments);

@@ -69,7 +69,7 @@ std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x
     const IndexedPolygon& poly = index.polygons()[id];
     if (!poly.casts_shadows) continue;
     bool odd = false, touched = false;
-    for (const FanTriangle& t : poly.surface.triangles) {
+    for (const FanTriangle& t : poly.surface->triangles) {
       const Hit h = cross_triangle(index, poly, t, x, far, light);
       if (h == Hit::touch) {
         touched = true;

@@ -5,16 +5,25 @@
 
 namespace umbra::geometry {
 
-SceneIndex::SceneIndex(const Scene& scene) : scene_(&scene) {
+SceneIndex::SceneIndex(const Scene& scene) : SceneIndex(scene, {}) {}
+
+SceneIndex::SceneIndex(const Scene& scene,
+                       std::span<const std::vector<PolygonSurface>* const> surfaces)
+    : scene_(&scene), owned_(scene.models.size()) {
   for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
     const Model& model = scene.models[m];
+    const std::vector<PolygonSurface>* given = m < surfaces.size() ? surfaces[m] : nullptr;
+    if (given == nullptr || given->size() != model.polygons.size()) {
+      owned_[m] = model_surfaces(model);  // filled before any pointer into it is taken
+      given = &owned_[m];
+    }
     for (std::uint32_t p = 0; p < model.polygons.size(); ++p) {
-      PolygonSurface surface = polygon_surface(model.vertices, model.polygons[p]);
+      const PolygonSurface& surface = (*given)[p];
       if (surface.shape == PolygonShape::degenerate) continue;  // covers nothing, shadows nothing
       Box box;
       for (std::uint32_t v : model.polygons[p]) box.extend(model.vertices[v]);
       boxes_.push_back(box);
-      polygons_.push_back({m, p, std::move(surface), model.casts_shadows});
+      polygons_.push_back({m, p, &surface, model.casts_shadows});
     }
   }
   bounds_ = scene_bounds(scene);

@@ -99,7 +99,7 @@ bool on_casting_surface(const SceneIndex& index, const Vec3& x) {
   for (std::uint32_t pi : candidates) {
     const IndexedPolygon& poly = index.polygons()[pi];
     if (!poly.casts_shadows) continue;
-    for (const FanTriangle& t : poly.surface.triangles) {
+    for (const FanTriangle& t : poly.surface->triangles) {
       const Vec3& a = index.vertex(poly, t.local[0]);
       const Vec3& b = index.vertex(poly, t.local[1]);
       const Vec3& c = index.vertex(poly, t.local[2]);

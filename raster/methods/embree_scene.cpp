@@ -91,8 +91,8 @@ EmbreeScene::EmbreeScene(const geometry::SceneIndex& index, unsigned threads) {
       const geometry::IndexedPolygon& p = polygons[i];
       const geometry::Polygon& polygon = scene.models[p.model].polygons[p.polygon];
       const unsigned base = first_vertex[p.model];
-      for (std::uint32_t k = 0; k < p.surface.triangles.size(); ++k) {
-        const auto& local = p.surface.triangles[k].local;
+      for (std::uint32_t k = 0; k < p.surface->triangles.size(); ++k) {
+        const auto& local = p.surface->triangles[k].local;
         const Triangle t{base + polygon[local[0]], base + polygon[local[1]],
                          base + polygon[local[2]]};
         all.push_back(t);

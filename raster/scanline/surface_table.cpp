@@ -36,7 +36,7 @@ Vec3 unit_or_zero(const Vec3& v) {
 
 Vec3 hit_normal(const geometry::SceneIndex& index, const geometry::SurfaceHit& hit) {
   const geometry::IndexedPolygon& p = index.polygons()[hit.polygon];
-  if (p.surface.shape == geometry::PolygonShape::planar) {
+  if (p.surface->shape == geometry::PolygonShape::planar) {
     const Vec3 n = unit_or_zero(newell_normal(index, p));
     if (n != Vec3{0, 0, 0}) return n;
   }
@@ -76,7 +76,7 @@ SurfaceTable surface_table(const geometry::SceneIndex& index) {
       table.entries.push_back(entry);
       table.polygons.push_back(std::move(raster));
     };
-    switch (p.surface.shape) {
+    switch (p.surface->shape) {
       case geometry::PolygonShape::degenerate:
         break;  // no surface: nothing to see
       case geometry::PolygonShape::planar: {
@@ -90,8 +90,8 @@ SurfaceTable surface_table(const geometry::SceneIndex& index) {
         break;
       }
       case geometry::PolygonShape::non_planar:
-        for (std::uint32_t t = 0; t < p.surface.triangles.size(); ++t) {
-          const auto& local = p.surface.triangles[t].local;
+        for (std::uint32_t t = 0; t < p.surface->triangles.size(); ++t) {
+          const auto& local = p.surface->triangles[t].local;
           add(t, {index.vertex(p, local[0]), index.vertex(p, local[1]), index.vertex(p, local[2])});
         }
         break;

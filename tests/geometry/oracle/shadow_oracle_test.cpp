@@ -182,7 +182,7 @@ TEST(ShadowOracle, NonPlanarPolygonUsesItsFanTriangulation) {
   const SceneIndex index(s);
   const auto hit = first_hit(index, SampleRay{{-0.5, 5, 0.5}, {0, -1, 0}});
   ASSERT_TRUE(hit);
-  EXPECT_EQ(index.polygons()[hit->polygon].surface.shape, PolygonShape::non_planar);
+  EXPECT_EQ(index.polygons()[hit->polygon].surface->shape, PolygonShape::non_planar);
   EXPECT_EQ(hit->triangle, 1u);
 }
 
