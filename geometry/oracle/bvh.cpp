@@ -12,21 +12,22 @@ Bvh::Bvh(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
   if (!boxes_.empty()) {
     // The centres once, not in every comparison of every level's split
     // (the same values: the same expression).
-    centres_.reserve(boxes_.size());
-    for (const Box& b : boxes_) centres_.push_back(b.centre());
+    std::vector<Vec3> centres;
+    centres.reserve(boxes_.size());
+    for (const Box& b : boxes_) centres.push_back(b.centre());
     nodes_.reserve(2 * boxes_.size());
-    build(0, static_cast<std::uint32_t>(boxes_.size()));
-    centres_ = {};
+    build(0, static_cast<std::uint32_t>(boxes_.size()), centres);
   }
 }
 
-std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
+std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end,
+                         const std::vector<Vec3>& centres_of) {
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   nodes_.push_back({});
   Box box, centres;
   for (std::uint32_t i = begin; i < end; ++i) {
     box.extend(boxes_[order_[i]]);
-    centres.extend(centres_[order_[i]]);
+    centres.extend(centres_of[order_[i]]);
   }
   nodes_[index].box = box;
   constexpr std::uint32_t kLeafSize = 4;
@@ -41,9 +42,9 @@ std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(
       order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-      [&](std::uint32_t a, std::uint32_t b) { return centres_[a][axis] < centres_[b][axis]; });
-  build(begin, mid);  // the left child is always index + 1
-  const std::uint32_t right = build(mid, end);
+      [&](std::uint32_t a, std::uint32_t b) { return centres_of[a][axis] < centres_of[b][axis]; });
+  build(begin, mid, centres_of);  // the left child is always index + 1
+  const std::uint32_t right = build(mid, end, centres_of);
   nodes_[index].first = right;
   nodes_[index].count = 0;
   return index;

@@ -42,12 +42,12 @@ class Bvh {
     std::uint32_t first = 0;  ///< leaf: first index into order_; inner: left child
     std::uint32_t count = 0;  ///< leaf: number of items; inner: 0
   };
-  std::uint32_t build(std::uint32_t begin, std::uint32_t end);
+  /// `centres[i]` is boxes_[i].centre(), computed once for the whole build.
+  std::uint32_t build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centres);
 
   std::vector<Box> boxes_;
   std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
-  std::vector<Vec3> centres_;  ///< boxes_' centres, while building
 };
 
 }  // namespace umbra::geometry

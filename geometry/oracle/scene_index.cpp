@@ -32,8 +32,14 @@ SceneIndex::SceneIndex(const Scene& scene,
 }
 
 const Bvh* SceneIndex::tree() const {
+  // The footprints' threads query without end: once built, one load, not a
+  // shared counter bumped by every query.
+  if (bvh_->built.load(std::memory_order_acquire)) return &bvh_->bvh;
   if (bvh_->queries.fetch_add(1, std::memory_order_relaxed) < kLinearQueries) return nullptr;
-  std::call_once(bvh_->once, [this] { bvh_->bvh = Bvh(boxes_); });
+  std::call_once(bvh_->once, [this] {
+    bvh_->bvh = Bvh(boxes_);
+    bvh_->built.store(true, std::memory_order_release);
+  });
   return &bvh_->bvh;
 }
 

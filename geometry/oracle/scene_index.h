@@ -71,6 +71,7 @@ class SceneIndex {
   std::vector<Box> boxes_;                          ///< boxes_[i] bounds polygons_[i]
   struct LazyBvh {
     std::atomic<std::uint32_t> queries{0};
+    std::atomic<bool> built{false};  ///< past the scans: no counting, no call_once
     std::once_flag once;
     Bvh bvh;
   };
