@@ -100,7 +100,7 @@ Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
     row.is_scored = false;
     return row;
   }
-  const raster::ShadowChannels channels{frame.width, frame.height, frame.shadow};
+  const raster::ShadowChannels channels = raster::shadow_channels(frame);
   const raster::ValidationReport report = raster::score_render(truth, channels);
   for (const raster::LightReport& l : report.lights) {
     row.compared += l.compared;

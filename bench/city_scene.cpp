@@ -4,6 +4,7 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 namespace umbra::bench {
 
@@ -64,6 +65,27 @@ geometry::Scene night_city(const CityOptions& options) {
                   .width = options.width,
                   .height = options.height};
   return scene;
+}
+
+void keep_lamps(geometry::Scene& city, int blocks, int lamps) {
+  const std::size_t all = city.lights.size();
+  if (lamps < 0 || static_cast<std::size_t>(lamps) >= all) return;
+  std::vector<geometry::Light> kept;
+  const int n = blocks + 1;  // lamps along a street: index ix·n + iz
+  int m = 0;
+  while ((m + 1) * (m + 1) <= lamps) ++m;
+  if (m * m == lamps && m <= n) {
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b) {
+        const int ix = (2 * a + 1) * n / (2 * m), iz = (2 * b + 1) * n / (2 * m);
+        kept.push_back(city.lights[static_cast<std::size_t>(ix * n + iz)]);
+      }
+  } else {
+    for (int k = 0; k < lamps; ++k)
+      kept.push_back(city.lights[(2 * static_cast<std::size_t>(k) + 1) * all /
+                                 (2 * static_cast<std::size_t>(lamps))]);
+  }
+  city.lights = std::move(kept);
 }
 
 }  // namespace umbra::bench

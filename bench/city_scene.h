@@ -17,4 +17,11 @@ struct CityOptions {
 
 geometry::Scene night_city(const CityOptions& options = {});
 
+/// Keeps `lamps` of the city's (blocks + 1)^2 street lights, spread over
+/// it: for a square number m² of them the m × m crossings at
+/// ⌊(a + ½)·(blocks + 1)/m⌋ along each street (one lamp: the middle
+/// crossing), else lamp ⌊(k + ½)·N/K⌋ of the N in grid order. All of them
+/// when `lamps` is not below N.
+void keep_lamps(geometry::Scene& city, int blocks, int lamps);
+
 }  // namespace umbra::bench

@@ -15,7 +15,7 @@ std::vector<float> error_picture(const raster::Frame& frame, const raster::Oracl
     int worst = 0;  // 3 false-lit, 2 false-shadowed, 1 wrong range
     for (std::size_t l = 0; l < truth.lights; ++l) {
       if (truth.boundary[k * truth.lights + l]) continue;
-      switch (raster::judge(truth.cls[k * truth.lights + l], frame.shadow[l][p])) {
+      switch (raster::judge(truth.cls[k * truth.lights + l], frame.shadow(l, p))) {
         case raster::Mistake::none:
           break;
         case raster::Mistake::false_lit:

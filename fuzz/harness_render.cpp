@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.method = raster::Method::volume;
   options.threads = 1;
   const raster::Frame frame = raster::render(scene, options);
-  raster::ShadowChannels channels{frame.width, frame.height, frame.shadow};
+  raster::ShadowChannels channels = raster::shadow_channels(frame);
   raster::ValidateOptions check;
   check.threads = 1;
   const raster::ValidationReport report = raster::validate_render(scene, channels, check);

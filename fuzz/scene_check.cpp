@@ -31,7 +31,7 @@ void render_and_validate(const geometry::Scene& scene, const SceneCheckOptions& 
   n.exact_fallback_pixels = stats.exact_fallback_pixels;
   n.exact_light_recounts = stats.exact_light_recounts;
   n.eye_degenerate_lights = stats.eye_degenerate_lights;
-  const raster::ShadowChannels channels{frame.width, frame.height, frame.shadow};
+  const raster::ShadowChannels channels = raster::shadow_channels(frame);
   raster::ValidateOptions validate;
   validate.threads = options.threads;
   const raster::ValidationReport report = raster::validate_render(scene, channels, validate);

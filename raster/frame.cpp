@@ -21,21 +21,57 @@ RowRange tile_rows(int height, int index, int count) {
 }
 
 Frame::Frame(int w, int h, std::size_t lights, unsigned threads)
-    : width(w), height(h), shadow(lights), count(lights) {
+    : Frame(w, h, LightWindows::whole(w, h, lights), threads) {}
+
+Frame::Frame(int w, int h, LightWindows light_windows, unsigned threads)
+    : width(w), height(h), windows(std::move(light_windows)) {
+  if (windows.width() != w || windows.height() != h)
+    throw std::invalid_argument("Frame: windows of a " + std::to_string(windows.width()) + "x" +
+                                std::to_string(windows.height()) + " image for a " +
+                                std::to_string(w) + "x" + std::to_string(h) + " frame");
   const std::size_t pixels = static_cast<std::size_t>(w) * h;
-  // One buffer per job: each is allocated and first touched by the thread
-  // that fills it.
-  const auto buffers = static_cast<int>(2 + 2 * lights);
-  util::parallel_for(buffers, threads, [&](int k) {
-    if (k == 0)
-      beauty.assign(pixels * 3, 0.0f);
-    else if (k == 1)
-      depth.assign(pixels, kDepthBackground);
-    else if (const auto l = static_cast<std::size_t>(k - 2); l < lights)
-      shadow[l].assign(pixels, kShadowLit);
-    else
-      count[l - lights].assign(pixels, 0.0f);
+  const std::size_t values = windows.size();
+  // One buffer per job, each allocated and first touched by the thread
+  // that fills it (the two value buffers are the large ones).
+  util::parallel_for(5, threads, [&](int k) {
+    if (k == 0) shadow_values.assign(values, kShadowLit);
+    if (k == 1) count_values.assign(values, 0.0f);
+    if (k == 2) beauty.assign(pixels * 3, 0.0f);
+    if (k == 3) depth.assign(pixels, kDepthBackground);
+    if (k == 4) hit.assign(pixels, 0);
   });
+}
+
+namespace {
+
+/// One light's values at every pixel, as `value(light, pixel)` gives them.
+template <class Value>
+util::PixelPlane whole_plane(const Frame& frame, std::size_t light, Value value) {
+  util::PixelPlane plane(static_cast<std::size_t>(frame.width) * frame.height);
+  for (std::size_t p = 0; p < plane.size(); ++p) plane[p] = value(light, p);
+  return plane;
+}
+
+}  // namespace
+
+util::PixelPlane Frame::shadow_plane(std::size_t light) const {
+  return whole_plane(*this, light, [this](std::size_t l, std::size_t p) { return shadow(l, p); });
+}
+
+util::PixelPlane Frame::count_plane(std::size_t light) const {
+  return whole_plane(*this, light, [this](std::size_t l, std::size_t p) { return count(l, p); });
+}
+
+std::vector<util::PixelPlane> Frame::shadow_planes() const {
+  std::vector<util::PixelPlane> planes;
+  for (std::size_t l = 0; l < lights(); ++l) planes.push_back(shadow_plane(l));
+  return planes;
+}
+
+std::vector<util::PixelPlane> Frame::count_planes() const {
+  std::vector<util::PixelPlane> planes;
+  for (std::size_t l = 0; l < lights(); ++l) planes.push_back(count_plane(l));
+  return planes;
 }
 
 }  // namespace umbra::raster

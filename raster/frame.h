@@ -1,9 +1,11 @@
 #pragma once
 // What every render method produces: the beauty pass and the AOVs of
 // DESIGN.md, as plain buffers, row-major from the top-left pixel.
+#include <raster/light_windows.h>
 #include <util/huge_pages.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -39,22 +41,62 @@ RowRange tile_rows(int height, int index, int count);
 struct Frame {
   int width = 0;
   int height = 0;
-  util::PixelPlane beauty;               ///< linear RGB, 3 floats a pixel
-  std::vector<util::PixelPlane> shadow;  ///< per light: kShadowLit / Shadowed / OutOfRange
-  std::vector<util::PixelPlane> count;   ///< per light: the final depth count
+  util::PixelPlane beauty;  ///< linear RGB, 3 floats a pixel
+  /// Where each light's shadow.<i> and count.<i> values are stored
+  /// (light_windows.h): the whole image for every method but the volume
+  /// method, whose limited lights keep only the pixels they can reach.
+  LightWindows windows;
+  /// shadow.<i> values (kShadowLit / Shadowed / OutOfRange) and count.<i>
+  /// values (the final depth count) inside the windows, light by light,
+  /// each window row by row (LightWindows::index).
+  util::PixelPlane shadow_values;
+  util::PixelPlane count_values;
   /// Distance from the eye to the visible point along the sample ray
   /// (t·|d|); kDepthBackground where the ray hits nothing.
   util::PixelPlane depth;
+  /// 1 where the sample ray hits a surface. Outside a light's window a
+  /// sample is out of range where this is 1 and lit background where it is
+  /// 0 (a depth may round to infinity as a float and still be a hit).
+  std::vector<std::uint8_t> hit;
 
   Frame() = default;
   /// Every buffer filled with its background value. With 16 lights at
   /// 1280x720 that is 130 MB written (and page-faulted, in huge pages where
   /// the system has them) before the render starts, so the buffers are
   /// filled on up to `threads` threads (0: every hardware thread).
+  /// Every light's window is the whole image.
   Frame(int w, int h, std::size_t lights, unsigned threads = 1);
+  /// The same with the given windows (of a w x h image).
+  Frame(int w, int h, LightWindows light_windows, unsigned threads = 1);
 
   std::size_t pixel(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }
-  std::size_t lights() const { return shadow.size(); }
+  std::size_t lights() const { return windows.lights(); }
+
+  /// shadow.<i> and count.<i> of light `light` at pixel `pixel`, inside its
+  /// window or not.
+  float shadow(std::size_t light, std::size_t pixel) const {
+    const std::size_t k = slot(light, pixel);
+    if (k != LightWindows::npos) return shadow_values[k];
+    return hit[pixel] ? kShadowOutOfRange : kShadowLit;
+  }
+  float count(std::size_t light, std::size_t pixel) const {
+    const std::size_t k = slot(light, pixel);
+    return k != LightWindows::npos ? count_values[k] : 0.0f;
+  }
+  /// The place of (light, pixel) in shadow_values and count_values, or
+  /// LightWindows::npos outside the light's window.
+  std::size_t slot(std::size_t light, std::size_t pixel) const {
+    return windows.index(light, static_cast<int>(pixel % static_cast<std::size_t>(width)),
+                         static_cast<int>(pixel / static_cast<std::size_t>(width)));
+  }
+  /// Light `light`'s shadow.<i> and count.<i> values as whole planes
+  /// (width x height), inside its window or not.
+  util::PixelPlane shadow_plane(std::size_t light) const;
+  util::PixelPlane count_plane(std::size_t light) const;
+  /// Every light's shadow.<i> and count.<i> planes, in light order: what
+  /// the EXR holds, whatever the windows (for comparing two frames).
+  std::vector<util::PixelPlane> shadow_planes() const;
+  std::vector<util::PixelPlane> count_planes() const;
 };
 
 }  // namespace umbra::raster

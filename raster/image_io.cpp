@@ -123,26 +123,41 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
 
   // The channels are interleaved a block of rows at a time: the whole
   // image at once would double the frame's memory (133 MB more at 16
-  // lights and 1280x720, each page of it first touched here). 64 rows are
-  // four of OpenEXR's 16-row zip blocks; the file is the same bytes.
-  constexpr int kBlockRows = 64;
+  // lights and 1280x720, each page of it first touched here). Blocks are
+  // whole 16-row zip blocks of OpenEXR, 64 rows, or 16 where that would
+  // pass 64 MB (a thousand lights' channels); the file is the same bytes.
   const std::size_t width = static_cast<std::size_t>(frame.width);
-  write_atomically(path, header, codec::Pixels::float32, kBlockRows,
-                   [&](int y0, int y1, void* out) {
-                     float* const block = static_cast<float*>(out);
-                     for (std::size_t p = static_cast<std::size_t>(y0) * width;
-                          p < static_cast<std::size_t>(y1) * width; ++p) {
-                       float* px = &block[(p - static_cast<std::size_t>(y0) * width) * channels];
-                       px[0] = frame.beauty[p * 3 + 0];
-                       px[1] = frame.beauty[p * 3 + 1];
-                       px[2] = frame.beauty[p * 3 + 2];
-                       for (std::size_t i = 0; i < lights; ++i) {
-                         px[3 + i] = frame.shadow[i][p];
-                         px[3 + lights + i] = frame.count[i][p];
-                       }
-                       px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
-                     }
-                   });
+  const int block_rows = width * channels * sizeof(float) * 64 > (std::size_t{64} << 20) ? 16 : 64;
+  write_atomically(
+      path, header, codec::Pixels::float32, block_rows, [&](int y0, int y1, void* out) {
+        float* const block = static_cast<float*>(out);
+        for (int y = y0; y < y1; ++y) {
+          float* const row = &block[static_cast<std::size_t>(y - y0) * width * channels];
+          const std::size_t p0 = static_cast<std::size_t>(y) * width;
+          for (std::size_t x = 0; x < width; ++x) {
+            float* px = &row[x * channels];
+            const std::size_t p = p0 + x;
+            px[0] = frame.beauty[p * 3 + 0];
+            px[1] = frame.beauty[p * 3 + 1];
+            px[2] = frame.beauty[p * 3 + 2];
+            // Outside every window (Frame::shadow, count).
+            const float outside = frame.hit[p] ? kShadowOutOfRange : kShadowLit;
+            std::fill(px + 3, px + 3 + lights, outside);
+            std::fill(px + 3 + lights, px + 3 + 2 * lights, 0.0f);
+            px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
+          }
+          // Then each light whose window holds the row, over its span.
+          for (const std::uint32_t l : frame.windows.row_lights(y)) {
+            const PixelRect& r = frame.windows.rect(l);
+            const std::size_t from = frame.windows.index(l, r.x0, y);
+            for (int x = r.x0; x < r.x1; ++x) {
+              float* px = &row[static_cast<std::size_t>(x) * channels];
+              px[3 + l] = frame.shadow_values[from + static_cast<std::size_t>(x - r.x0)];
+              px[3 + lights + l] = frame.count_values[from + static_cast<std::size_t>(x - r.x0)];
+            }
+          }
+        }
+      });
 }
 
 /// Buffer sizes that do not match width x height are a bug in the caller,
@@ -152,16 +167,18 @@ void check_frame(const Frame& frame) {
     throw std::invalid_argument(
         fmt::format("write_frame: empty frame {}x{}", frame.width, frame.height));
   const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
-  bool ok = frame.beauty.size() == n * 3 && frame.depth.size() == n &&
-            frame.count.size() == frame.shadow.size();
-  for (const auto& s : frame.shadow) ok = ok && s.size() == n;
-  for (const auto& c : frame.count) ok = ok && c.size() == n;
+  const bool ok = frame.beauty.size() == n * 3 && frame.depth.size() == n &&
+                  frame.hit.size() == n && frame.windows.width() == frame.width &&
+                  frame.windows.height() == frame.height &&
+                  frame.shadow_values.size() == frame.windows.size() &&
+                  frame.count_values.size() == frame.windows.size();
   if (!ok)
     throw std::invalid_argument(fmt::format(
         "write_frame: buffer sizes do not match {}x{} with {} lights ({} beauty floats, "
-        "{} depth, {} count channels)",
-        frame.width, frame.height, frame.shadow.size(), frame.beauty.size(), frame.depth.size(),
-        frame.count.size()));
+        "{} depth, {} hit, {} shadow and {} count values for windows of {})",
+        frame.width, frame.height, frame.lights(), frame.beauty.size(), frame.depth.size(),
+        frame.hit.size(), frame.shadow_values.size(), frame.count_values.size(),
+        frame.windows.size()));
 }
 
 /// The light index of a channel named exactly `shadow.<i>` (i written without
@@ -199,6 +216,13 @@ void write_frame_tile(const Frame& frame, RowRange rows, const TileLabel& tile,
     throw std::invalid_argument(
         fmt::format("write_frame_tile: rows {} to {} of {}", rows.begin, rows.end, frame.height));
   write_exr(frame, path, rows, &tile);
+}
+
+ShadowChannels shadow_channels(const Frame& frame) {
+  ShadowChannels out{frame.width, frame.height, {}};
+  out.shadow.reserve(frame.lights());
+  for (std::size_t l = 0; l < frame.lights(); ++l) out.shadow.push_back(frame.shadow_plane(l));
+  return out;
 }
 
 ShadowChannels read_shadow_channels(const fs::path& path) {

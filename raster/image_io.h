@@ -59,6 +59,10 @@ struct ShadowChannels {
 };
 ShadowChannels read_shadow_channels(const std::filesystem::path& path);
 
+/// A rendered frame's shadow.<i> channels as whole planes, as they would be
+/// read back from its EXR (outside a light's window: Frame::shadow).
+ShadowChannels shadow_channels(const Frame& frame);
+
 /// Same, from the file's bytes; `name` names it in messages. The format is
 /// decided by the content (magic numbers), not the name: anything but
 /// OpenEXR is refused, saying what it is. Also refused: a data window other

@@ -20,6 +20,10 @@ float shadow_value(ShadowClass c) {
 }
 }  // namespace
 
+PixelSample::PixelSample(std::size_t every) : lights(every), classes(every), counts(every) {
+  for (std::size_t l = 0; l < every; ++l) lights[l] = static_cast<std::uint32_t>(l);
+}
+
 void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
                   const PixelSample& sample, std::size_t pixel, Frame& frame) {
   const Vec3 point = ray.origin + sample.t * ray.direction;
@@ -29,12 +33,16 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
   // One buffer per thread, reused pixel after pixel: every method stores
   // every pixel through here, and a vector made per call was a heap
   // allocation per pixel.
-  thread_local std::vector<bool> lit;
-  lit.assign(sample.classes.size(), false);
-  for (std::size_t i = 0; i < lit.size(); ++i) {
-    lit[i] = sample.classes[i] == ShadowClass::lit;
-    frame.shadow[i][pixel] = shadow_value(sample.classes[i]);
-    frame.count[i][pixel] = static_cast<float>(sample.counts[i]);
+  thread_local std::vector<std::uint32_t> lit;
+  lit.clear();
+  const auto w = static_cast<std::size_t>(frame.width);
+  const int i = static_cast<int>(pixel % w), j = static_cast<int>(pixel / w);
+  for (std::size_t k = 0; k < sample.lights.size(); ++k) {
+    const std::uint32_t l = sample.lights[k];
+    if (sample.classes[k] == ShadowClass::lit) lit.push_back(l);
+    const std::size_t slot = frame.windows.inside(l, i, j);  // listed: in its window
+    frame.shadow_values[slot] = shadow_value(sample.classes[k]);
+    frame.count_values[slot] = static_cast<float>(sample.counts[k]);
   }
   const geometry::Rgb c =
       shade(scene, sample.look, point, normal, geometry::normalize(-ray.direction), lit);
@@ -42,15 +50,30 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
   frame.beauty[3 * pixel + 1] = static_cast<float>(c.g);
   frame.beauty[3 * pixel + 2] = static_cast<float>(c.b);
   frame.depth[pixel] = static_cast<float>(sample.t * geometry::length(ray.direction));
+  frame.hit[pixel] = 1;
 }
 
 void store_background(std::size_t pixel, Frame& frame) {
+  const auto w = static_cast<std::size_t>(frame.width);
+  thread_local std::vector<std::uint32_t> here;
+  here.clear();
+  const int i = static_cast<int>(pixel % w), j = static_cast<int>(pixel / w);
+  for (const std::uint32_t l : frame.windows.row_lights(j))
+    if (frame.windows.rect(l).contains(i, j)) here.push_back(l);
+  store_background(pixel, frame, here);
+}
+
+void store_background(std::size_t pixel, Frame& frame, std::span<const std::uint32_t> lights) {
   for (int k = 0; k < 3; ++k) frame.beauty[3 * pixel + k] = 0.0f;
-  for (std::size_t i = 0; i < frame.lights(); ++i) {
-    frame.shadow[i][pixel] = kShadowLit;
-    frame.count[i][pixel] = 0.0f;
+  const auto w = static_cast<std::size_t>(frame.width);
+  const int i = static_cast<int>(pixel % w), j = static_cast<int>(pixel / w);
+  for (const std::uint32_t l : lights) {
+    const std::size_t slot = frame.windows.inside(l, i, j);
+    frame.shadow_values[slot] = kShadowLit;
+    frame.count_values[slot] = 0.0f;
   }
   frame.depth[pixel] = kDepthBackground;
+  frame.hit[pixel] = 0;
 }
 
 }  // namespace umbra::raster

@@ -6,29 +6,42 @@
 #include <raster/frame.h>
 #include <raster/shading.h>
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace umbra::raster {
 
 struct PixelSample {
   PixelSample() = default;
-  /// Room for `lights` classes and counts, reused pixel after pixel.
-  explicit PixelSample(std::size_t lights) : classes(lights), counts(lights) {}
+  /// Room for `every` lights' classes and counts, every light listed,
+  /// reused pixel after pixel.
+  explicit PixelSample(std::size_t every);
 
   double t = 0;           ///< ray parameter of the visible point H = eye + t·d
   geometry::Vec3 normal;  ///< unit normal of the visible surface, either orientation
   SurfaceLook look;
-  std::vector<geometry::ShadowClass> classes;  ///< per light
-  std::vector<int> counts;                     ///< per light: the final depth count
+  /// The lights decided at this sample, in increasing order: every light of
+  /// the scene, or (the volume method) only those whose window in the frame
+  /// holds the pixel (light_windows.h). classes[k] and counts[k] belong to
+  /// light lights[k]; with every light listed, k is the light's index.
+  std::vector<std::uint32_t> lights;
+  std::vector<geometry::ShadowClass> classes;
+  std::vector<int> counts;  ///< the final depth count
 };
 
 /// Writes `sample` to pixel `pixel` of `frame`: beauty (ambient plus the lit
 /// lights, the normal turned to face the eye), shadow.<i>, count.<i>, depth.
+/// Every light the sample lists must have the pixel in its window, and
+/// every light whose window holds the pixel must be listed.
 void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
                   const PixelSample& sample, std::size_t pixel, Frame& frame);
 
 /// Writes the background: black beauty, lit shadow AOVs, zero counts,
 /// infinite depth (the Frame's initial values, restated for reuse).
 void store_background(std::size_t pixel, Frame& frame);
+/// The same where the caller knows `lights`, the lights whose window holds
+/// the pixel (RowSweep), in light order.
+void store_background(std::size_t pixel, Frame& frame, std::span<const std::uint32_t> lights);
 
 }  // namespace umbra::raster

@@ -60,17 +60,23 @@ Frame render_linear(const geometry::Scene& scene, const RenderOptions& options,
              (options.rows ? options.rows->size() : scene.camera.height);
   if (!options.shadows && options.method != Method::volume)
     throw std::invalid_argument("render: shadows can only be turned off for Method::volume");
+  Frame frame;
   switch (options.method) {
     case Method::exact:
-      return render_exact(index, options, s);
+      frame = render_exact(index, options, s);
+      break;
     case Method::volume:
-      return render_volume(index, tables, options, s);
+      frame = render_volume(index, tables, options, s);
+      break;
     case Method::map:
-      return render_map(index, options, s);
+      frame = render_map(index, options, s);
+      break;
     case Method::ray:
-      return render_ray(index, options, s);
+      frame = render_ray(index, options, s);
+      break;
   }
-  return render_volume(index, tables, options, s);
+  s.light_pixels = frame.windows.size();
+  return frame;
 }
 
 }  // namespace

@@ -78,6 +78,11 @@ struct RenderOptions {
   /// default) leaves every value as shaded. Finite, |exposure| <=
   /// kMaxExposure (else std::invalid_argument).
   double exposure = 0;
+  /// Method::volume and Method::ray: keep each limited light's per-pixel
+  /// state only in its window (light_windows.h), the pixels its reach can
+  /// touch. false: every light over the whole image, the same bytes (tests
+  /// compare the two).
+  bool light_windows = true;
 };
 
 struct RenderStats {
@@ -99,6 +104,10 @@ struct RenderStats {
   /// (pixel, light) counts decided again exactly where the visible point
   /// stood but a shadow polygon of the light was too close to call.
   std::uint64_t exact_light_recounts = 0;
+  /// (pixel, light) pairs whose shadow.<i> and count.<i> the frame keeps:
+  /// pixels × lights, or for the volume method the lights' windows
+  /// (light_windows.h), outside which no sample is in a light's range.
+  std::uint64_t light_pixels = 0;
   std::uint64_t twisted_polygons = 0;  ///< (light, polygon) pairs with an L-twist
   /// Lights for which no count at the eye is defined (the eye on one of
   /// their volumes' boundaries, or the segment from the eye to the light

@@ -20,12 +20,11 @@ double light_falloff(const Light& light, double distance) {
 }
 
 Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
-          const Vec3& normal, const Vec3& to_eye, const std::vector<bool>& lit) {
+          const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit) {
   const Rgb& color = look.color;
   const bool glossy = look.specular.r > 0 || look.specular.g > 0 || look.specular.b > 0;
   Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    if (!lit[i]) continue;
+  for (const std::uint32_t i : lit) {
     const Light& light = scene.lights[i];
     Vec3 to_light;
     double factor = 1.0;

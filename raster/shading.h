@@ -3,6 +3,9 @@
 // falloff, added only for lights that reach the sample.
 #include <geometry/scene.h>
 
+#include <cstdint>
+#include <span>
+
 namespace umbra::raster {
 
 /// Bergeron's intensity factor at distance d from a point light: 1 up to
@@ -21,11 +24,13 @@ struct SurfaceLook {
 /// (color · max(0, n·l) + specular · max(0, n·h)^shininess where n·l > 0),
 /// h the half vector of l and the direction to the eye. `normal` is the unit
 /// normal facing the eye; `to_eye` the unit direction from the point to the
-/// eye; `lit[i]` says whether light i reaches the point (its count is zero
-/// and it is in range): a shadowed light adds nothing, highlight included.
+/// eye; `lit` lists, in increasing order, the lights that reach the point
+/// (count zero and in range): a shadowed light adds nothing, highlight
+/// included. Listing only those (not a flag per scene light) keeps a pixel
+/// that 3 of 1,024 lamps reach at 3 steps.
 geometry::Rgb shade(const geometry::Scene& scene, const SurfaceLook& look,
                     const geometry::Vec3& point, const geometry::Vec3& normal,
-                    const geometry::Vec3& to_eye, const std::vector<bool>& lit);
+                    const geometry::Vec3& to_eye, std::span<const std::uint32_t> lit);
 
 /// The sRGB transfer curve, for the PNG's 8 bits (input clamped to [0, 1]).
 float encode_srgb(float linear);

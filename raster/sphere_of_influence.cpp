@@ -13,24 +13,23 @@ namespace {
 /// surfaces the sphere truly comes near are left to the exact predicate.
 constexpr double kMargin = 1e-9;
 
-InSphere coverage(const RasterPolygon& p, const geometry::Light& light) {
+/// `vertices`: a surface polygon's vertices, `lo`/`hi` their box.
+InSphere coverage(std::span<const geometry::Vec3> vertices, const geometry::Vec3& lo,
+                  const geometry::Vec3& hi, const geometry::Light& light) {
   if (light.type != geometry::LightType::point || !light.light_end) return InSphere::inside;
   const double r2 = *light.light_end * *light.light_end;
   // A sample lies in the polygon: no farther from L than its farthest
   // vertex, no nearer than its bounding box.
-  double far2 = 0;
-  geometry::Vec3 lo = p.vertices.front(), hi = p.vertices.front();
-  for (const geometry::Vec3& v : p.vertices) {
-    const geometry::Vec3 d = v - light.position;
-    far2 = std::max(far2, geometry::dot(d, d));
-    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-  }
   const geometry::Vec3& c = light.position;
   const geometry::Vec3 gap{std::max({lo.x - c.x, 0.0, c.x - hi.x}),
                            std::max({lo.y - c.y, 0.0, c.y - hi.y}),
                            std::max({lo.z - c.z, 0.0, c.z - hi.z})};
   const double near2 = geometry::dot(gap, gap);
+  double far2 = 0;
+  for (const geometry::Vec3& v : vertices) {
+    const geometry::Vec3 d = v - c;
+    far2 = std::max(far2, geometry::dot(d, d));
+  }
   if (!std::isfinite(far2) || !std::isfinite(r2)) return InSphere::cut;
   if (far2 < r2 * (1 - kMargin)) return InSphere::inside;
   if (near2 > r2 * (1 + kMargin)) return InSphere::outside;
@@ -49,21 +48,46 @@ bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
 
 SphereTable::SphereTable(std::span<const RasterPolygon> surfaces,
                          std::span<const geometry::Light> lights)
-    : lights_(lights.size()) {
+    : lights_(lights) {
   std::uint32_t count = 0;
   for (const RasterPolygon& p : surfaces)
     if (p.kind == RasterPolygon::Kind::surface) count = std::max(count, p.id + 1);
-  table_.assign(static_cast<std::size_t>(count) * lights_, InSphere::cut);
+  shapes_.assign(count, Shape{});
   for (const RasterPolygon& p : surfaces) {
     if (p.kind != RasterPolygon::Kind::surface || p.vertices.empty()) continue;
-    for (std::size_t l = 0; l < lights_; ++l)
-      table_[static_cast<std::size_t>(p.id) * lights_ + l] = coverage(p, lights[l]);
+    Shape& shape = shapes_[p.id];
+    shape.first = static_cast<std::uint32_t>(vertices_.size());
+    shape.count = static_cast<std::uint32_t>(p.vertices.size());
+    shape.lo = shape.hi = p.vertices.front();
+    for (const geometry::Vec3& v : p.vertices) {
+      vertices_.push_back(v);
+      shape.lo = {std::min(shape.lo.x, v.x), std::min(shape.lo.y, v.y), std::min(shape.lo.z, v.z)};
+      shape.hi = {std::max(shape.hi.x, v.x), std::max(shape.hi.y, v.y), std::max(shape.hi.z, v.z)};
+    }
   }
+  // Value-initialized: every pair unknown until asked.
+  table_ = std::make_unique<std::atomic<std::uint8_t>[]>(static_cast<std::size_t>(count) *
+                                                         lights_.size());
+}
+
+InSphere SphereTable::classify(std::uint32_t surface, std::uint32_t light) const {
+  // Relaxed is enough: every thread that computes a pair computes the same
+  // value from read-only data, so a racing store writes what is there.
+  std::atomic<std::uint8_t>& cell =
+      table_[static_cast<std::size_t>(surface) * lights_.size() + light];
+  const Shape& shape = shapes_[surface];
+  const InSphere r = shape.count == 0 ? InSphere::cut
+                                      : coverage({vertices_.data() + shape.first, shape.count},
+                                                 shape.lo, shape.hi, lights_[light]);
+  cell.store(static_cast<std::uint8_t>(static_cast<std::uint8_t>(r) + 1),
+             std::memory_order_relaxed);
+  return r;
 }
 
 bool SphereTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
                                const geometry::SampleRay& ray,
                                const geometry::HitTriangle& tri) const {
+  if (light.type != geometry::LightType::point || !light.light_end) return false;  // no reach
   const InSphere r = at(surface, l);
   return r == InSphere::outside || (r == InSphere::cut && raster::out_of_range(light, ray, tri));
 }

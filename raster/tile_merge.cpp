@@ -169,9 +169,9 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
           if (d < 3)
             frame.beauty[p * 3 + d] = v;
           else if (d < 3 + lights)
-            frame.shadow[d - 3][p] = v;
+            frame.shadow_values[frame.slot(d - 3, p)] = v;  // whole windows: always a slot
           else if (d < 3 + 2 * lights)
-            frame.count[d - 3 - lights][p] = v;
+            frame.count_values[frame.slot(d - 3 - lights, p)] = v;
           else
             frame.depth[p] = v;
         }

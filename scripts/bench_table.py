@@ -9,7 +9,9 @@ light) counts recounted alone). A second table sets the volume method
 beside Embree (issue 20): the ray method's frame and the volume frame's
 ratio to it, umbra's visible-surface pass alone (the volume method on the
 scene without lights) against Embree's primary rays (the ray method on
-the same) and against a minimal float z-buffer (bench/zbuffer.h)."""
+the same) and against a minimal float z-buffer (bench/zbuffer.h). A third,
+when the run has the night city (UMBRA_BENCH_CITY), sets its many-lamp
+frames beside the one-lamp frame, the plain pass and Embree."""
 import json
 import sys
 
@@ -27,7 +29,7 @@ def main(path):
           "shadow polygons | bands skipped | exact fallbacks | exact recounts |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for (mesh, lights, mode), r in sorted(median.items()):
-        if mode != "shadows":
+        if mode != "shadows" or mesh == "city":
             continue
         plain = median.get((mesh, lights, "plain"))
         t = r["real_time"]
@@ -50,13 +52,29 @@ def main(path):
           "Embree primary (ms) | surface / primary | z-buffer (ms) | surface / z-buffer |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for (mesh, lights, mode) in sorted(median):
-        if mode != "shadows":
+        if mode != "shadows" or mesh == "city":
             continue
         t, ray = time(mesh, lights, "shadows"), time(mesh, lights, "ray")
         plain, primary = time(mesh, lights, "surface"), time(mesh, lights, "primary")
         z = time(mesh, lights, "zbuffer")
         print(f"| {mesh} | {lights} | {t:.0f} | {ray:.0f} | {t / ray:.2f} | {plain:.0f} | "
               f"{primary:.0f} | {plain / primary:.2f} | {z:.0f} | {plain / z:.2f} |")
+
+    city = sorted(lights for (mesh, lights, mode) in median if mesh == "city" and mode == "shadows")
+    if city:
+        # Many lights (issue 20, goal 4): the frame against the one-lamp
+        # frame, its plain pass and Embree, and the (pixel, light) pairs kept.
+        one = time("city", city[0], "shadows")
+        print()
+        print("| city lamps | volume (ms) | plain (ms) | volume / plain | volume / 1 lamp | "
+              "Embree rays (ms) | volume / Embree | light pixels | light pixels / pixel |")
+        print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+        for lights in city:
+            r = median[("city", lights, "shadows")]
+            t, plain, ray = r["real_time"], time("city", lights, "plain"), time("city", lights, "ray")
+            kept = r.get("light_pixels", float("nan"))
+            print(f"| {lights} | {t:.0f} | {plain:.0f} | {t / plain:.2f} | {t / one:.2f} | "
+                  f"{ray:.0f} | {t / ray:.2f} | {kept:.0f} | {kept / (1280 * 720):.2f} |")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 #include <geometry/volumes/contour.h>
 #include <geometry/volumes/far_ends.h>
 #include <geometry/volumes/model_edges.h>
+#include <geometry/volumes/model_reach.h>
 #include <geometry/volumes/sphere_ends.h>
 #include <util/parallel_for.h>
 
@@ -217,6 +218,11 @@ struct SceneShare {
   double margin = 0;  ///< far_end_margin(bounds)
   /// Per model (model_tables.h); may be empty where it casts no shadows.
   std::span<const ModelTables> tables;
+  /// The models each light can reach (sphere-of-influence culling before
+  /// any polygon is looked at), and the edges of every casting model's
+  /// polygons (Crow's all-edges count, the same for every light).
+  const ModelReach* reach = nullptr;
+  std::uint64_t casting_edges = 0;
   /// Per model: its triangles' runs for the lights' distance queries
   /// (triangle_runs.h); empty where it casts no shadows, or where there are
   /// too few point lights for them to pay.
@@ -296,13 +302,18 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
   stats.light = li;
   out.extrusion.assign(scene.models.size(), 0.0);
 
-  for (std::uint32_t mi = 0; mi < scene.models.size(); ++mi) {
+  stats.crow_all_edges_polygons = share.casting_edges;
+  stats.crow_bytes = share.casting_edges * polygon_bytes(4);
+  // Models whose box lies wholly outside the sphere are culled unseen: no
+  // facing, no contour.
+  std::vector<std::uint32_t> reached;
+  share.reach->models(light, reached);
+  stats.culled_models = share.reach->casting_models() - reached.size();
+  stats.culled_polygons = share.reach->casting_polygons();
+  for (const std::uint32_t mi : reached) stats.culled_polygons -= scene.models[mi].polygons.size();
+
+  for (const std::uint32_t mi : reached) {
     const Model& model = scene.models[mi];
-    if (!model.casts_shadows) continue;
-    for (const Polygon& p : model.polygons) {
-      stats.crow_all_edges_polygons += p.size();
-      stats.crow_bytes += p.size() * polygon_bytes(4);
-    }
     const ModelTables& tables = share.tables[mi];
     const std::vector<PolygonRole> roles = polygon_roles(model, tables.surfaces, lp);
     std::vector<std::uint32_t> casting;
@@ -320,7 +331,7 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
       if (light.light_end && distance > *light.light_end) {
         // Wholly outside the sphere: everything it could shadow is out of range.
         ++stats.culled_models;
-        stats.culled_polygons += contour.size() + (options.caps ? 2 * casting.size() : 0);
+        stats.culled_polygons += model.polygons.size();
         continue;
       }
     }
@@ -391,7 +402,11 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
         "build_shadow_volumes: far ends that leave the bounds need caps = false (the far caps "
         "close a volume scaled about the light)");
   const Box bounds = scene_bounds(scene);
-  SceneShare share{scene, bounds, far_end_margin(bounds), tables, {}};
+  const ModelReach reach(scene);
+  SceneShare share{scene, bounds, far_end_margin(bounds), tables, &reach, 0, {}};
+  for (const Model& model : scene.models)
+    if (model.casts_shadows)
+      for (const Polygon& p : model.polygons) share.casting_edges += p.size();
   // Runs serve point lights' distances only, made once per casting model:
   // their sort costs about what four full scans of the model do (3 ms and
   // 8-10 ms on refined_elephant's 89k triangles), so with fewer point

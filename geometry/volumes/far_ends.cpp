@@ -103,6 +103,14 @@ double box_distance(const Vec3& p, const Box& box) {
 
 }  // namespace
 
+bool box_beyond_reach(const Box& box, const Vec3& light, double reach) {
+  if (box.empty() || !(reach >= 1e-140)) return false;
+  const double dx = std::max(std::max(box.lo.x - light.x, light.x - box.hi.x), 0.0);
+  const double dy = std::max(std::max(box.lo.y - light.y, light.y - box.hi.y), 0.0);
+  const double dz = std::max(std::max(box.lo.z - light.z, light.z - box.hi.z), 0.0);
+  return (dx * dx + dy * dy + dz * dz) * (1 - 1e-12) > reach * reach;
+}
+
 double distance_lower_bound(const Model& model, std::span<const PolygonSurface> surfaces,
                             std::span<const std::uint32_t> polygons, const Vec3& light) {
   double nearest = std::numeric_limits<double>::infinity();

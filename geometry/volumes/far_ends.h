@@ -41,6 +41,18 @@ double distance_lower_bound(const Model& model, std::span<const PolygonSurface> 
                             const TriangleRuns& runs, std::span<const std::uint32_t> polygons,
                             const Vec3& light);
 
+/// Whether every point of `box` is farther than `reach` from `light`, decided
+/// soundly in doubles: each component of the gap between the point and the
+/// box is one rounded subtraction (relative error u), so the computed
+/// squared gap is within 8u of the true one, far inside the 1e-12 it must
+/// clear; squares that could underflow (reach below 1e-140) or a NaN answer
+/// false. Every fan triangle of a model inside such a box is then beyond
+/// the light's reach, and the model casts nothing for it: checked before
+/// any polygon is looked at (a 1,024-lamp city asked every lamp for every
+/// building's facings), in a few instructions (a 1,024 x 3,845 grid of
+/// pairs is asked).
+bool box_beyond_reach(const Box& box, const Vec3& light, double reach);
+
 /// The extrusion factor for a model whose volume-casting polygons are at
 /// distance >= `distance` from the light: every far vertex, edge and cap then
 /// lies beyond reach.radius. Directional lights ignore `distance`.

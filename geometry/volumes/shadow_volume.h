@@ -72,8 +72,9 @@ struct VolumeStats {
   std::uint64_t twisted_polygons = 0;
   std::uint64_t crow_all_edges_polygons = 0;  ///< Crow's baseline: one per edge of every polygon
   /// Sphere of influence (point lights with light_end): models wholly
-  /// outside it get no volume; these are the side polygons (contour edges)
-  /// and the caps they would have had.
+  /// outside it get no volume; these are those models and their polygons
+  /// (faces of the model, none of them examined for this light: a model
+  /// whose box lies outside is skipped before any facing is decided).
   std::uint64_t culled_models = 0;
   std::uint64_t culled_polygons = 0;
   /// Models whose volumes end at the sphere rather than past the scene.

@@ -5,6 +5,7 @@
 // that can reach them. Nothing is decided exactly: every float mistake
 // (acne, leaks, misses at shared edges) is the method's error, which the
 // validator counts.
+#include <raster/light_windows.h>
 #include <raster/methods/embree_scene.h>
 #include <raster/methods/render_methods.h>
 #include <raster/pixel_sample.h>
@@ -136,7 +137,13 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
 
   // As in the other methods, "decide" includes allocating the frame.
   start = util::Clock::now();
-  Frame frame(camera.width, camera.height, lights, options.threads);
+  // Each light's samples only where its reach can touch the image
+  // (light_windows.h): 1,024 street lamps cost their pools of light, not
+  // 1,024 whole planes and a shadow-ray decision per pixel each.
+  const LightWindows windows = options.light_windows
+                                   ? light_windows(camera, scene.lights)
+                                   : LightWindows::whole(camera.width, camera.height, lights);
+  Frame frame(camera.width, camera.height, windows, options.threads);
   const std::vector<FloatLight> float_light = float_lights(scene);
   const float offset = static_cast<float>(options.ray.epsilon * rt.diagonal());
   stats.ray_offset = offset;
@@ -152,12 +159,23 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
     coherent.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     rtcIntersect1M(rt.visible(), &coherent, primary.data(), camera.width, sizeof(RTCRayHit));
 
+    // The lights of each pixel of the row (those whose window holds it):
+    // pixel i's are here[first[i], first[i + 1]).
+    RowSweep sweep(windows, j);
+    std::vector<std::uint32_t> here;
+    std::vector<std::size_t> first(width + 1, 0);
+    for (std::size_t i = 0; i < width; ++i) {
+      first[i] = here.size();
+      const std::span<const std::uint32_t> at = sweep.at(static_cast<int>(i));
+      here.insert(here.end(), at.begin(), at.end());
+    }
+    first[width] = here.size();
     // Classes known without a ray; occlusion rays for the rest, one stream.
-    std::vector<ShadowClass> classes(width * lights, ShadowClass::lit);
+    std::vector<ShadowClass> classes(here.size(), ShadowClass::lit);
     std::vector<RTCRay> occlusion;
     std::vector<std::size_t> slot;  // classes[] index of each occlusion ray
-    occlusion.reserve(width * lights);
-    slot.reserve(width * lights);
+    occlusion.reserve(here.size());
+    slot.reserve(here.size());
     for (std::size_t i = 0; i < width; ++i) {
       const RTCRayHit& p = primary[i];
       if (p.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
@@ -165,20 +183,21 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       const glm::vec3 dir{p.ray.dir_x, p.ray.dir_y, p.ray.dir_z};
       const glm::vec3 h = org + p.ray.tfar * dir;  // the float hit point
       const glm::vec3 ng{p.hit.Ng_x, p.hit.Ng_y, p.hit.Ng_z};
-      for (std::size_t l = 0; l < lights; ++l) {
+      for (std::size_t k = first[i]; k < first[i + 1]; ++k) {
         RTCRay ray;
-        switch (shadow_ray(float_light[l], h, ng, -dir, rt.casts(p.hit.primID), offset, ray)) {
+        switch (
+            shadow_ray(float_light[here[k]], h, ng, -dir, rt.casts(p.hit.primID), offset, ray)) {
           case Reach::out_of_range:
-            classes[i * lights + l] = ShadowClass::out_of_range;
+            classes[k] = ShadowClass::out_of_range;
             break;
           case Reach::attached:
-            classes[i * lights + l] = ShadowClass::shadowed;
+            classes[k] = ShadowClass::shadowed;
             break;
           case Reach::trace:
             // A point light nearer than twice the offset: nothing fits between.
             if (ray.tfar > ray.tnear) {
               occlusion.push_back(ray);
-              slot.push_back(i * lights + l);
+              slot.push_back(k);
             }
             break;
         }
@@ -193,12 +212,14 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       if (occlusion[k].tfar == -kInfinity) classes[slot[k]] = ShadowClass::shadowed;
     shadow_rays += occlusion.size();
 
-    PixelSample sample(lights);
+    PixelSample sample;
     for (std::size_t i = 0; i < width; ++i) {
       const std::size_t pixel = frame.pixel(static_cast<int>(i), j);
       const RTCRayHit& p = primary[i];
+      const std::span<const std::uint32_t> lights_here(here.data() + first[i],
+                                                       first[i + 1] - first[i]);
       if (p.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-        store_background(pixel, frame);
+        store_background(pixel, frame, lights_here);
         continue;
       }
       const SurfaceEntry& entry = rt.entry(p.hit.primID);
@@ -207,10 +228,12 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       sample.t = p.ray.tfar;
       sample.normal = entry.normal;
       sample.look = entry.look;
-      for (std::size_t l = 0; l < lights; ++l) {
-        sample.classes[l] = classes[i * lights + l];
-        sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
-      }
+      sample.lights.assign(lights_here.begin(), lights_here.end());
+      sample.classes.assign(classes.begin() + static_cast<std::ptrdiff_t>(first[i]),
+                            classes.begin() + static_cast<std::ptrdiff_t>(first[i + 1]));
+      sample.counts.resize(sample.classes.size());
+      for (std::size_t k = 0; k < sample.classes.size(); ++k)
+        sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
       store_sample(scene, geometry::sample_ray(camera, static_cast<int>(i), j), sample, pixel,
                    frame);
     }

@@ -8,6 +8,7 @@
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/crossings.h>
 #include <geometry/volumes/eye_start.h>
+#include <raster/light_windows.h>
 #include <raster/methods/render_methods.h>
 #include <raster/pixel_sample.h>
 #include <raster/scanline/scanline.h>
@@ -18,6 +19,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -31,14 +33,17 @@ namespace {
 /// those whose plane holds the eye (eye.planes) go as eye planes: seen
 /// edge-on they would be drawn as nothing and flag their whole bounding
 /// box, and where they hold the eye, every pixel.
+/// A light whose window is empty (its reach off the image) counts nowhere:
+/// its polygons are left out.
 void append_shadow_polygons(const geometry::ShadowVolumes& volumes, const geometry::EyeStart& eye,
-                            std::vector<RasterPolygon>& polygons) {
+                            const LightWindows& windows, std::vector<RasterPolygon>& polygons) {
   std::vector<std::uint8_t> through_eye(volumes.polygons.size(), 0);
   for (const auto& planes : eye.planes)
     for (const geometry::EyePlaneSide& side : planes) through_eye[side.polygon] = 1;
   for (std::uint32_t k = 0; k < volumes.polygons.size(); ++k) {
     if (through_eye[k]) continue;
     const geometry::ShadowPolygon& s = volumes.polygons[k];
+    if (windows.rect(s.light).empty()) continue;
     RasterPolygon raster;
     raster.vertices = s.vertices;
     raster.kind = RasterPolygon::Kind::shadow;
@@ -137,11 +142,15 @@ Frame render_volume(const geometry::SceneIndex& index,
   start = util::Clock::now();
   SurfaceTable table = surface_table(index);
   const SphereTable spheres(table.polygons, scene.lights);
-  append_shadow_polygons(volumes, eye, table.polygons);
+  const LightWindows windows = options.light_windows
+                                   ? light_windows(camera, scene.lights)
+                                   : LightWindows::whole(camera.width, camera.height, lights);
+  append_shadow_polygons(volumes, eye, windows, table.polygons);
   const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye);
   progress.phase("scanline", static_cast<std::uint64_t>(rows.size()));
-  const ScanlineResult scan = scanline_render(camera, table.polygons, lights, options.threads,
-                                              eye.in_shadow, &progress, true, planes, rows);
+  const ScanlineResult scan =
+      scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow, &progress,
+                      true, planes, rows, &windows);
   stats.seconds_raster = util::seconds_since(start);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
@@ -150,38 +159,58 @@ Frame render_volume(const geometry::SceneIndex& index,
 
   start = util::Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
-  Frame frame(camera.width, camera.height, lights, options.threads);
+  Frame frame(camera.width, camera.height, windows, options.threads);
   std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
   // Light l's count at a visible point, decided exactly on the ideal
   // volumes; where even that meets a degenerate configuration (the eye
   // segment through an edge of a side polygon, in its plane, or the eye on a
   // volume), by the oracle, and count.<i> then holds 1 for shadowed, 0 for lit.
+  // (k: the light's place in the sample's list, l: the light.)
   const auto decide_exactly = [&](const geometry::SampleRay& ray, const geometry::SurfaceHit& hit,
                                   const geometry::HitTriangle& tri, std::size_t pixel,
-                                  std::uint32_t l, PixelSample& sample) {
+                                  std::size_t k, std::uint32_t l, PixelSample& sample) {
     const std::optional<int> count = !options.shadows    ? std::optional<int>(0)
                                      : eye.degenerate[l] ? std::nullopt
                                                          : crossings.count(ray, tri, l, eye);
     if (count) {
-      sample.counts[l] = *count;
-      sample.classes[l] = class_of_count(*count, pixel, l);
+      sample.counts[k] = *count;
+      sample.classes[k] = class_of_count(*count, pixel, l);
     } else {
-      sample.classes[l] = geometry::classify_sample(index, ray, hit, l).cls;
-      sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+      sample.classes[k] = geometry::classify_sample(index, ray, hit, l).cls;
+      sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
     }
   };
   progress.phase("shading", static_cast<std::uint64_t>(rows.size()));
   for_each_row(rows, options.threads, [&](int j) {
-    PixelSample sample(lights);
+    // The lights whose window holds each pixel: no other light's sample
+    // can be in range, and the frame keeps nothing of it there. With every
+    // window whole (no light has a reach) that is every light, listed once.
+    PixelSample sample;
+    const bool whole = windows.all_whole();
+    std::optional<RowSweep> sweep;
+    std::span<const std::uint32_t> here = windows.row_lights(j);
+    if (whole) {
+      sample.lights.assign(here.begin(), here.end());
+      sample.classes.resize(here.size());
+      sample.counts.resize(here.size());
+    } else {
+      sweep.emplace(windows, j);
+    }
     std::uint64_t row_fallbacks = 0, row_recounts = 0;
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
+      if (!whole) {
+        here = sweep->at(i);
+        sample.lights.assign(here.begin(), here.end());
+        sample.classes.resize(here.size());
+        sample.counts.resize(here.size());
+      }
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       const std::uint8_t doubt = scan.uncertain[pixel];
       if (!(doubt & kSurfaceUncertain)) {
         const std::int32_t id = scan.visible[pixel];
         if (id < 0) {
-          store_background(pixel, frame);
+          store_background(pixel, frame, here);
           continue;
         }
         const SurfaceEntry& entry = table.entries[static_cast<std::size_t>(id)];
@@ -189,31 +218,32 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.t = scan.depth[pixel];
         sample.normal = entry.normal;
         sample.look = entry.look;
-        for (std::uint32_t l = 0; l < lights; ++l) {
+        for (std::size_t k = 0; k < sample.lights.size(); ++k) {
+          const std::uint32_t l = sample.lights[k];
           if (eye.degenerate[l]) {
             // No count at the eye for this light: the oracle decides its
             // samples, the scanline's answer stands for every other light.
-            sample.classes[l] = geometry::classify_sample(index, ray, entry.hit, l).cls;
-            sample.counts[l] = sample.classes[l] == ShadowClass::shadowed ? 1 : 0;
+            sample.classes[k] = geometry::classify_sample(index, ray, entry.hit, l).cls;
+            sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
             continue;
           }
           if (spheres.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
             // count.<i> is 0 out of range, as in the exact fallback below.
             // The scanline's count means nothing there: volumes are cut at
             // the light's reach without caps, so it may even be negative.
-            sample.classes[l] = ShadowClass::out_of_range;
-            sample.counts[l] = 0;
+            sample.classes[k] = ShadowClass::out_of_range;
+            sample.counts[k] = 0;
             continue;
           }
           if ((doubt & kLightsUncertain) && (scan.light_mask[pixel] & light_bit(l))) {
             // A shadow polygon of this light was too close to call: its
             // count again, exactly, at the visible point that stands.
             ++row_recounts;
-            decide_exactly(ray, entry.hit, tri, pixel, l, sample);
+            decide_exactly(ray, entry.hit, tri, pixel, k, l, sample);
             continue;
           }
-          sample.counts[l] = eye.count[l] + scan.count[pixel * lights + l];
-          sample.classes[l] = class_of_count(sample.counts[l], pixel, l);
+          sample.counts[k] = eye.count[l] + scan.count_at(l, i, j);
+          sample.classes[k] = class_of_count(sample.counts[k], pixel, l);
         }
         store_sample(scene, ray, sample, pixel, frame);
         continue;
@@ -223,17 +253,18 @@ Frame render_volume(const geometry::SceneIndex& index,
       ++row_fallbacks;
       const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
       if (!hit) {
-        store_background(pixel, frame);
+        store_background(pixel, frame, here);
         continue;
       }
       const geometry::HitTriangle tri = set_surface(index, ray, *hit, sample);
-      for (std::uint32_t l = 0; l < lights; ++l) {
+      for (std::size_t k = 0; k < sample.lights.size(); ++k) {
+        const std::uint32_t l = sample.lights[k];
         if (out_of_range(scene.lights[l], ray, tri)) {
-          sample.classes[l] = ShadowClass::out_of_range;
-          sample.counts[l] = 0;
+          sample.classes[k] = ShadowClass::out_of_range;
+          sample.counts[k] = 0;
           continue;
         }
-        decide_exactly(ray, *hit, tri, pixel, l, sample);
+        decide_exactly(ray, *hit, tri, pixel, k, l, sample);
       }
       store_sample(scene, ray, sample, pixel, frame);
     }

@@ -205,6 +205,8 @@ class BandWorker {
 
   const EdgeTables& scene_;
   ScanlineResult& result_;
+  /// Every light's window is the whole image: no clamping to do.
+  bool windows_whole_ = result_.windows.all_whole();
   util::Progress* progress_;
   std::uint64_t spans_ = 0;                 // spans shaded by this worker
   std::uint64_t skipped_ = 0;               // (polygon, band) pairs it found behind

@@ -40,7 +40,8 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start,
                                util::Progress* progress, bool skip_hidden_shadows,
-                               std::span<const EyePlane> eye_planes, std::optional<RowRange> rows) {
+                               std::span<const EyePlane> eye_planes, std::optional<RowRange> rows,
+                               const LightWindows* windows) {
   if (frame.width <= 0 || frame.height <= 0)
     throw std::invalid_argument("scanline_render: image size must be positive, got " +
                                 std::to_string(frame.width) + "x" + std::to_string(frame.height));
@@ -58,12 +59,18 @@ ScanlineResult scanline_render(const geometry::CameraFrame& frame,
   result.width = frame.width;
   result.height = frame.height;
   result.lights = lights;
+  if (windows && (windows->lights() != lights || windows->width() != frame.width ||
+                  windows->height() != frame.height))
+    throw std::invalid_argument("scanline_render: windows of " + std::to_string(windows->lights()) +
+                                " lights on a " + std::to_string(windows->width()) + "x" +
+                                std::to_string(windows->height()) + " image");
+  result.windows = windows ? *windows : LightWindows::whole(frame.width, frame.height, lights);
   const std::size_t pixels = static_cast<std::size_t>(frame.width) * frame.height;
   // Not initialized here: every row's pixels are set by the worker that
   // renders the row (BandWorker::scan_row), in parallel.
   result.visible.resize(pixels);
   result.depth.resize(pixels);
-  result.count.resize(pixels * lights);
+  result.count.resize(result.windows.size());
   result.uncertain.resize(pixels);
   result.light_mask.resize(pixels);
 

@@ -6,6 +6,7 @@
 // shadow polygons were too close to call); every other answer is final.
 #include <geometry/sample_ray.h>
 #include <raster/frame.h>
+#include <raster/light_windows.h>
 #include <util/progress.h>
 #include <util/uninitialized.h>
 
@@ -69,12 +70,25 @@ struct ScanlineResult {
       visible;  ///< surface id per pixel; -1 where the ray hits nothing
   util::UninitializedVector<double>
       depth;  ///< ray parameter t of the visible hit (infinity if none)
-  /// [pixel * lights + light]: the summed nb_c values of the shadow polygons in
-  /// front of the hit, plus, for every twisted group whose flag differs at
-  /// the hit from its value at the eye, +1 (set there) or -1 (cleared there);
-  /// the count at the eye is the caller's. 0 where the ray hits nothing:
-  /// spans without a surface are skipped.
+  /// Where each light's counts are kept: its window (light_windows.h), the
+  /// whole image unless the caller gave windows.
+  LightWindows windows;
+  /// [windows.index(light, i, j)]: the summed nb_c values of the shadow
+  /// polygons in front of the hit, plus, for every twisted group whose flag
+  /// differs at the hit from its value at the eye, +1 (set there) or -1
+  /// (cleared there); the count at the eye is the caller's. 0 where the ray
+  /// hits nothing: spans without a surface are skipped. Outside a light's
+  /// window nothing is counted: no sample there is in its range.
   util::UninitializedVector<std::int32_t> count;
+  /// Light `light`'s count at pixel (i, j), which must lie in its window.
+  std::int32_t count_at(std::size_t light, int i, int j) const {
+    return count[windows.inside(light, i, j)];
+  }
+  /// The same at pixel index p = j·width + i.
+  std::int32_t count_at(std::size_t light, std::size_t p) const {
+    const auto w = static_cast<std::size_t>(width);
+    return count_at(light, static_cast<int>(p % w), static_cast<int>(p / w));
+  }
   /// kSurfaceUncertain (alone: everything is decided again), or
   /// kLightsUncertain, or 0 where every answer is final.
   util::UninitializedVector<std::uint8_t> uncertain;
@@ -101,11 +115,15 @@ struct ScanlineResult {
 /// `rows`: only these rows are rendered (a tile); the buffers of the others
 /// hold no values. A row's values do not depend on which other rows are
 /// rendered when the range starts on a band (frame.h, kTileRowAlignment).
+/// `windows`: each light's window (of `lights` lights on the frame's
+/// image); its shadow polygons are counted inside it alone (none when
+/// null: the whole image for every light).
 ScanlineResult scanline_render(const geometry::CameraFrame& frame,
                                std::span<const RasterPolygon> polygons, std::size_t lights,
                                unsigned threads, std::span<const std::uint8_t> group_start = {},
                                util::Progress* progress = nullptr, bool skip_hidden_shadows = true,
                                std::span<const EyePlane> eye_planes = {},
-                               std::optional<RowRange> rows = {});
+                               std::optional<RowRange> rows = {},
+                               const LightWindows* windows = nullptr);
 
 }  // namespace umbra::raster

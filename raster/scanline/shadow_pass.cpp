@@ -35,8 +35,13 @@ void BandWorker::start_shadow_band() {
   std::sort(middle, shadows_.end(), by_polygon);
   std::inplace_merge(shadows_.begin(), middle, shadows_.end(), by_polygon);
   live_.clear();
-  for (const ActiveShadow& a : shadows_)
+  // A polygon whose light's window misses the band counts nothing in it.
+  const LightWindows& windows = result_.windows;
+  for (const ActiveShadow& a : shadows_) {
+    const PixelRect& w = windows.rect(scene_.polygons[a.polygon].light);
+    if (w.y1 <= band0_ || w.y0 >= band1_ || w.empty()) continue;
     if (!behind_in_band(a.polygon)) live_.push_back(a.polygon);
+  }
 }
 
 /// The band's shadow polygons (Bergeron's saving: a shadow polygon behind
@@ -59,7 +64,14 @@ void BandWorker::scan_shadows() {
   for (const std::uint32_t polygon : live_) {
     const ShadowSpan& span = scene_.shadow_spans[polygon];
     const ProjectedPolygon& shadow = scene_.polygons[polygon];
-    for (int j = band0_; j < band1_; ++j) {
+    // Only the rows of its light's window: no count of it is read elsewhere.
+    int j0 = band0_, j1 = band1_;
+    if (!windows_whole_) {
+      const PixelRect& window = result_.windows.rect(shadow.light);
+      j0 = std::max(j0, window.y0);
+      j1 = std::min(j1, window.y1);
+    }
+    for (int j = j0; j < j1; ++j) {
       const double sy = row_sy_[j - band0_];
       // A side polygon is convex: two crossings a row, kept in registers;
       // any more (a clipped or general polygon) go through columns_, which
@@ -112,6 +124,16 @@ void BandWorker::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t poly
   // infinite where none was found): a depth clear with it is clear with the
   // pixel's own, so most pixels need neither.
   const double box_error = scene_.floors[polygon].error;
+  // Only inside its light's window (the caller checked the row): outside,
+  // no sample is in the light's range, so neither its count nor a flag of
+  // it is ever read.
+  if (!windows_whole_) {
+    const PixelRect& window = result_.windows.rect(shadow.light);
+    i0 = std::max(i0, window.x0);
+    i1 = std::min(i1, window.x1);
+  }
+  const std::size_t slot0 =
+      i0 < i1 ? result_.windows.inside(shadow.light, i0, j) : LightWindows::npos;
   for (int i = i0; i < i1; ++i) {
     const std::size_t p = pixel(i, j);
     if (result_.visible[p] < 0) continue;  // nothing seen: no count to change
@@ -137,7 +159,7 @@ void BandWorker::shade_shadow(const ProjectedPolygon& shadow, std::uint32_t poly
     }
     if (!(t > 0 && t < t_visible)) continue;
     if (shadow.group < 0)
-      result_.count[p * scene_.lights + shadow.light] += shadow.nb_c;
+      result_.count[slot0 + static_cast<std::size_t>(i - i0)] += shadow.nb_c;
     else
       group_hits_.push_back({p, shadow.group, shadow.light});
   }
@@ -164,10 +186,12 @@ void BandWorker::shade_eye_planes() {
           continue;
         }
         if (s < 0) continue;
-        if (plane.group < 0)
-          result_.count[p * scene_.lights + plane.light] += plane.nb_c;
-        else
+        if (plane.group < 0) {
+          const std::size_t slot = result_.windows.index(plane.light, i, j);
+          if (slot != LightWindows::npos) result_.count[slot] += plane.nb_c;
+        } else {
           group_hits_.push_back({p, plane.group, plane.light});
+        }
       }
     }
   }
@@ -188,8 +212,12 @@ void BandWorker::count_groups() {
     for (; k < end; ++k) {
       const GroupHit& hit = group_hits_[k];
       const auto g = static_cast<std::size_t>(hit.group);
-      if (flags_[g] != scene_.group_start[g])
-        result_.count[p * scene_.lights + hit.light] += flags_[g] ? 1 : -1;
+      if (flags_[g] != scene_.group_start[g]) {
+        const auto w = static_cast<std::size_t>(scene_.camera.frame.width);
+        const std::size_t slot =
+            result_.windows.index(hit.light, static_cast<int>(p % w), static_cast<int>(p / w));
+        if (slot != LightWindows::npos) result_.count[slot] += flags_[g] ? 1 : -1;
+      }
       flags_[g] = scene_.group_start[g];  // restored for the next pixel
     }
   }

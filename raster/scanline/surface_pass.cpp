@@ -24,7 +24,13 @@ void BandWorker::scan_row(int j, std::size_t carried) {
     result_.uncertain[p] = 0;
     result_.light_mask[p] = 0;
     visible_error_[row_base_ + i] = 0;
-    for (std::size_t l = 0; l < scene_.lights; ++l) result_.count[p * scene_.lights + l] = 0;
+  }
+  // The counts of the lights whose window holds the row, over the window.
+  const LightWindows& windows = result_.windows;
+  for (const std::uint32_t l : windows.row_lights(j)) {
+    const PixelRect& r = windows.rect(l);
+    const auto first = static_cast<std::ptrdiff_t>(windows.inside(l, r.x0, j));
+    std::fill(result_.count.begin() + first, result_.count.begin() + first + r.width(), 0);
   }
   // x sort: insertion sort of the carried crossings (nearly sorted since
   // the previous row), the new ones sorted apart, then one merge.

@@ -35,7 +35,7 @@ raster::Frame one_wrong(const geometry::Scene& s, const raster::RenderOptions& o
   raster::Frame frame = raster::render(s, exact, stats);
   for (std::size_t p = 0; p < frame.depth.size(); ++p) {
     if (frame.depth[p] == raster::kDepthBackground) continue;
-    float& v = frame.shadow[0][p];
+    float& v = frame.shadow_values[frame.slot(0, p)];
     if (v != raster::kShadowLit && v != raster::kShadowShadowed) continue;  // out of range
     v = v == raster::kShadowLit ? raster::kShadowShadowed : raster::kShadowLit;
     break;
@@ -135,7 +135,7 @@ TEST(RealSweep, ExportedFailureReplaysFromItsFiles) {
   exact.method = raster::Method::exact;
   const raster::Frame frame = raster::render(back, exact);
   const raster::ValidationReport report =
-      raster::validate_render(back, {frame.width, frame.height, frame.shadow}, {});
+      raster::validate_render(back, raster::shadow_channels(frame), {});
   EXPECT_EQ(report.total_mismatches(), 0u);
   EXPECT_EQ(report.lights.at(0).compared + report.background,
             static_cast<std::uint64_t>(frame.width) * frame.height);

@@ -29,7 +29,7 @@ geometry::Scene issue16_edge_midpoint_scene() {
 }
 
 raster::ValidationReport validate(const geometry::Scene& scene, const raster::Frame& frame) {
-  return raster::validate_render(scene, {frame.width, frame.height, frame.shadow}, {});
+  return raster::validate_render(scene, raster::shadow_channels(frame), {});
 }
 
 // Whatever the volume method draws for the issue's scene today (1,094 wrong
@@ -64,7 +64,7 @@ TEST(SceneCheck, ReportsAKnownWrongPictureAsFailing) {
     int flipped = 0;  // two pixels that show a surface (no sample on the background)
     for (std::size_t p = 0; p < frame.depth.size() && flipped < 2; ++p) {
       if (frame.depth[p] == raster::kDepthBackground) continue;
-      float& v = frame.shadow[0][p];
+      float& v = frame.shadow_values[frame.slot(0, p)];
       v = v == raster::kShadowLit ? raster::kShadowShadowed : raster::kShadowLit;
       ++flipped;
     }

@@ -31,8 +31,8 @@ Outcome render_and_validate(const std::string& json, const fs::path& file = "inl
   const geometry::Scene scene = geometry::parse_scene(json, file);
   Outcome out;
   const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &out.stats);
-  out.report = validate_render(scene, ShadowChannels{frame.width, frame.height, frame.shadow},
-                               {.samples = {}, .seed = 1, .threads = 2});
+  out.report =
+      validate_render(scene, shadow_channels(frame), {.samples = {}, .seed = 1, .threads = 2});
   return out;
 }
 
@@ -133,8 +133,7 @@ TEST(DegenerateLights, EyeOnASideVolumeKeepsTheScanline) {
   RenderStats stats;
   const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &stats);
   const ValidationReport report =
-      validate_render(scene, ShadowChannels{frame.width, frame.height, frame.shadow},
-                      {.samples = {}, .seed = 1, .threads = 2});
+      validate_render(scene, shadow_channels(frame), {.samples = {}, .seed = 1, .threads = 2});
   EXPECT_EQ(report.total_mismatches(), 0u);
   EXPECT_EQ(stats.eye_degenerate_lights, 0u);
   EXPECT_EQ(stats.exact_fallback_pixels, 0u);
@@ -142,7 +141,7 @@ TEST(DegenerateLights, EyeOnASideVolumeKeepsTheScanline) {
   // Both sides of the plane through the eye are seen: shadowed (under the
   // quad's shadow on the floor) and lit pixels.
   std::uint64_t shadowed = 0, lit = 0;
-  for (const float v : frame.shadow[0]) {
+  for (const float v : frame.shadow_plane(0)) {
     shadowed += v == kShadowShadowed;
     lit += v == kShadowLit;
   }

@@ -34,8 +34,8 @@ TEST(Exposure, ScalesTheBeautyByTwoToTheEvAndLeavesTheAovs) {
     ASSERT_EQ(plain.beauty.size(), bright.beauty.size());
     for (std::size_t i = 0; i < plain.beauty.size(); ++i)
       ASSERT_EQ(bright.beauty[i], plain.beauty[i] * 8.0f) << "spp " << spp << " value " << i;
-    EXPECT_EQ(bright.shadow, plain.shadow);
-    EXPECT_EQ(bright.count, plain.count);
+    EXPECT_EQ(bright.shadow_values, plain.shadow_values);
+    EXPECT_EQ(bright.count_values, plain.count_values);
     EXPECT_EQ(bright.depth, plain.depth);
   }
 }

@@ -51,8 +51,9 @@ Frame patterned_frame(int width, int height, std::size_t lights) {
   for (std::size_t i = 0; i < lights; ++i) {
     for (std::size_t p = 0; p < n; ++p) {
       const float values[3] = {kShadowLit, kShadowShadowed, kShadowOutOfRange};
-      frame.shadow[i][p] = values[(p + i) % 3];
-      frame.count[i][p] = static_cast<float>(static_cast<int>(i) - static_cast<int>(p % 4));
+      frame.shadow_values[frame.slot(i, p)] = values[(p + i) % 3];
+      frame.count_values[frame.slot(i, p)] =
+          static_cast<float>(static_cast<int>(i) - static_cast<int>(p % 4));
     }
   }
   for (std::size_t p = 0; p < n; ++p) frame.depth[p] = p % 5 == 0 ? kDepthBackground : 1.25f * p;
@@ -69,7 +70,8 @@ TEST_F(ImageIoTest, ExrRoundTripWithTwelveLightsKeepsChannelsByName) {
   EXPECT_EQ(read.width, 7);
   EXPECT_EQ(read.height, 5);
   ASSERT_EQ(read.shadow.size(), 12u);
-  for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(read.shadow[i], frame.shadow[i]) << "light " << i;
+  for (std::size_t i = 0; i < 12; ++i)
+    EXPECT_EQ(read.shadow[i], frame.shadow_plane(i)) << "light " << i;
 
   // The other channels, exactly, found by name with OpenImageIO.
   auto in = OIIO::ImageInput::open(path.string());
@@ -91,8 +93,10 @@ TEST_F(ImageIoTest, ExrRoundTripWithTwelveLightsKeepsChannelsByName) {
     EXPECT_EQ(g[p], frame.beauty[3 * p + 1]);
     EXPECT_EQ(b[p], frame.beauty[3 * p + 2]);
   }
-  for (std::size_t i = 0; i < 12; ++i)
-    EXPECT_EQ(channel("count." + std::to_string(i)), frame.count[i]);
+  for (std::size_t i = 0; i < 12; ++i) {
+    const auto count = channel("count." + std::to_string(i));
+    for (std::size_t p = 0; p < 35; ++p) EXPECT_EQ(count[p], frame.count(i, p)) << i << " " << p;
+  }
   const auto depth = channel("depth");
   EXPECT_EQ(depth, frame.depth);
   EXPECT_TRUE(std::isinf(depth[0]) && depth[0] > 0);  // background depth stays +inf
@@ -366,7 +370,7 @@ TEST_F(ImageIoTest, ExrNamedPngIsReadByItsContent) {
   fs::rename(dir_ / "render.exr", dir_ / "render.png");
   const ShadowChannels read = read_shadow_channels(dir_ / "render.png");
   ASSERT_EQ(read.shadow.size(), 2u);
-  EXPECT_EQ(read.shadow[1], frame.shadow[1]);
+  EXPECT_EQ(read.shadow[1], frame.shadow_plane(1));
 }
 
 TEST_F(ImageIoTest, DevicesAndHugeClaimsAreRefusedBeforeReading) {
@@ -393,7 +397,7 @@ TEST_F(ImageIoTest, ManyLightsReadInBlocksOfRows) {
   write_frame(frame, dir_ / "tall.exr");
   const ShadowChannels read = read_shadow_channels(dir_ / "tall.exr");
   ASSERT_EQ(read.shadow.size(), 11u);
-  for (std::size_t i = 0; i < 11; ++i) EXPECT_EQ(read.shadow[i], frame.shadow[i]) << i;
+  for (std::size_t i = 0; i < 11; ++i) EXPECT_EQ(read.shadow[i], frame.shadow_plane(i)) << i;
 }
 
 TEST_F(ImageIoTest, ShadowChannelsScatteredAmongOthersAreReadOneByOne) {

@@ -16,9 +16,7 @@ namespace {
 
 using geometry::Vec3;
 
-ShadowChannels channels_of(const Frame& frame) {
-  return ShadowChannels{frame.width, frame.height, frame.shadow};
-}
+ShadowChannels channels_of(const Frame& frame) { return shadow_channels(frame); }
 
 /// A 4 x 4 floor at y = 0 seen from straight above, a 0.5 x 0.5 square at
 /// y = 2 and a point light at (1, 4, 0): the square's shadow on the floor is
@@ -68,7 +66,7 @@ TEST(Render, SquareShadowOnFloorHasTheProjectedExtent) {
       const Vec3 h = ray.origin + t * ray.direction;
       // Points seen on the square itself (y = 2) face the light: lit.
       if (std::fabs(h.y - 2) < 1e-6) {
-        EXPECT_EQ(frame.shadow[0][p], kShadowLit) << i << "," << j;
+        EXPECT_EQ(frame.shadow(0, p), kShadowLit) << i << "," << j;
         ++lit;
         continue;
       }
@@ -77,8 +75,8 @@ TEST(Render, SquareShadowOnFloorHasTheProjectedExtent) {
       const double margin = std::max(std::fabs(h.x + 1), std::fabs(h.z)) - 0.5;
       if (std::fabs(margin) < 1e-3) continue;  // a pixel at the shadow's edge
       const float expected = margin < 0 ? kShadowShadowed : kShadowLit;
-      EXPECT_EQ(frame.shadow[0][p], expected) << i << "," << j;
-      EXPECT_EQ(frame.count[0][p], margin < 0 ? 1.0f : 0.0f) << i << "," << j;
+      EXPECT_EQ(frame.shadow(0, p), expected) << i << "," << j;
+      EXPECT_EQ(frame.count(0, p), margin < 0 ? 1.0f : 0.0f) << i << "," << j;
       (margin < 0 ? shadowed : lit)++;
     }
   }
@@ -136,14 +134,14 @@ TEST(Render, WithoutShadowsEveryLightReachesEverySampleInRange) {
   int out_of_range = 0, was_shadowed = 0;
   for (std::size_t l = 0; l < plain.lights(); ++l) {
     for (std::size_t p = 0; p < plain.depth.size(); ++p) {
-      EXPECT_EQ(plain.count[l][p], 0.0f);
+      EXPECT_EQ(plain.count(l, p), 0.0f);
       // Range does not depend on shadows; shadowed samples become lit.
-      if (shadowed.shadow[l][p] == kShadowOutOfRange) {
-        EXPECT_EQ(plain.shadow[l][p], kShadowOutOfRange) << l << " " << p;
+      if (shadowed.shadow(l, p) == kShadowOutOfRange) {
+        EXPECT_EQ(plain.shadow(l, p), kShadowOutOfRange) << l << " " << p;
         ++out_of_range;
       } else {
-        EXPECT_EQ(plain.shadow[l][p], kShadowLit) << l << " " << p;
-        was_shadowed += shadowed.shadow[l][p] == kShadowShadowed;
+        EXPECT_EQ(plain.shadow(l, p), kShadowLit) << l << " " << p;
+        was_shadowed += shadowed.shadow(l, p) == kShadowShadowed;
       }
     }
   }
@@ -168,7 +166,7 @@ TEST(Render, CountIsZeroOutOfRangeAndAgreesWithTheClassElsewhere) {
     int out_of_range = 0, shadowed = 0;
     for (std::size_t l = 0; l < frame.lights(); ++l) {
       for (std::size_t p = 0; p < frame.depth.size(); ++p) {
-        const float cls = frame.shadow[l][p], count = frame.count[l][p];
+        const float cls = frame.shadow(l, p), count = frame.count(l, p);
         if (cls == kShadowOutOfRange || !std::isfinite(frame.depth[p])) {
           EXPECT_EQ(count, 0.0f) << name << " light " << l << " pixel " << p;
           out_of_range += cls == kShadowOutOfRange;
@@ -195,8 +193,8 @@ TEST(Render, SupersamplingKeepsThePixelCentresAOVsBitForBit) {
     const Frame fine = render(scene, {.method = Method::volume, .threads = 2, .spp = spp});
     ASSERT_EQ(fine.width, 97);
     ASSERT_EQ(fine.height, 61);
-    EXPECT_EQ(fine.shadow, centre.shadow) << spp;
-    EXPECT_EQ(fine.count, centre.count) << spp;
+    EXPECT_EQ(fine.shadow_planes(), centre.shadow_planes()) << spp;
+    EXPECT_EQ(fine.count_planes(), centre.count_planes()) << spp;
     EXPECT_EQ(fine.depth, centre.depth) << spp;
     // The beauty is an average: different at edges, the same on average.
     double a = 0, b = 0;

@@ -36,9 +36,9 @@ TEST(Shade, AddsOnlyLitLights) {
   scene.lights = {above, above};
   const geometry::Rgb white{1, 1, 1};
   const geometry::Vec3 up{0, 1, 0};
-  const auto both = shade(scene, {white}, {0, 0, 0}, up, up, {true, true});
-  const auto one = shade(scene, {white}, {0, 0, 0}, up, up, {true, false});
-  const auto none = shade(scene, {white}, {0, 0, 0}, up, up, {false, false});
+  const auto both = shade(scene, {white}, {0, 0, 0}, up, up, std::vector<std::uint32_t>{0, 1});
+  const auto one = shade(scene, {white}, {0, 0, 0}, up, up, std::vector<std::uint32_t>{0});
+  const auto none = shade(scene, {white}, {0, 0, 0}, up, up, std::vector<std::uint32_t>{});
   EXPECT_DOUBLE_EQ(both.r, 2.1);
   EXPECT_DOUBLE_EQ(one.r, 1.1);
   EXPECT_DOUBLE_EQ(none.r, 0.1);
@@ -54,20 +54,21 @@ TEST(Shade, HighlightFollowsBlinnPhongAndNeverShowsInShadow) {
   const geometry::Vec3 up{0, 1, 0};
   const SurfaceLook glossy{{0.5, 0.5, 0.5}, {1, 0.5, 0}, 8};
   // Eye straight above: h = n, highlight 1: diffuse 0.5 plus specular.
-  const auto mirror = shade(scene, glossy, {0, 0, 0}, up, up, {true});
+  const auto mirror = shade(scene, glossy, {0, 0, 0}, up, up, std::vector<std::uint32_t>{0});
   EXPECT_DOUBLE_EQ(mirror.r, 0.5 + 1.0);
   EXPECT_DOUBLE_EQ(mirror.g, 0.5 + 0.5);
   EXPECT_DOUBLE_EQ(mirror.b, 0.5);
   // Eye at 90 degrees from the light: h at 45 degrees, (cos 45°)^8 = 1/16.
-  const auto grazing = shade(scene, glossy, {0, 0, 0}, up, {1, 0, 0}, {true});
+  const auto grazing =
+      shade(scene, glossy, {0, 0, 0}, up, {1, 0, 0}, std::vector<std::uint32_t>{0});
   EXPECT_NEAR(grazing.r, 0.5 + 1.0 / 16, 1e-12);
   // In shadow: nothing at all from that light, highlight included.
-  const auto dark = shade(scene, glossy, {0, 0, 0}, up, up, {false});
+  const auto dark = shade(scene, glossy, {0, 0, 0}, up, up, std::vector<std::uint32_t>{});
   EXPECT_EQ(dark.r, 0.0);
   EXPECT_EQ(dark.g, 0.0);
   // A light behind the surface lights nothing, whatever the eye sees.
   scene.lights[0].direction = {0, 1, 0};
-  const auto behind = shade(scene, glossy, {0, 0, 0}, up, up, {true});
+  const auto behind = shade(scene, glossy, {0, 0, 0}, up, up, std::vector<std::uint32_t>{0});
   EXPECT_EQ(behind.r, 0.0);
 }
 

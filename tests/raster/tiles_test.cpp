@@ -66,8 +66,8 @@ TEST(RenderRows, SomeRowsEqualTheWholeRendersRowsForEveryMethod) {
         ASSERT_EQ(std::memcmp(&part.depth[p], &depth, sizeof(float)), 0)
             << "method " << static_cast<int>(method) << " pixel " << i << "," << j;
         for (std::size_t l = 0; l < whole.lights(); ++l) {
-          EXPECT_EQ(part.shadow[l][p], inside ? whole.shadow[l][p] : kShadowLit);
-          EXPECT_EQ(part.count[l][p], inside ? whole.count[l][p] : 0.0f);
+          EXPECT_EQ(part.shadow(l, p), inside ? whole.shadow(l, p) : kShadowLit);
+          EXPECT_EQ(part.count(l, p), inside ? whole.count(l, p) : 0.0f);
         }
         for (int c = 0; c < 3; ++c)
           EXPECT_EQ(part.beauty[3 * p + c], inside ? whole.beauty[3 * p + c] : 0.0f);

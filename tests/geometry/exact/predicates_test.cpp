@@ -177,6 +177,51 @@ TEST(HitDistance, ComparesWithTheRadiusExactly) {
             Sign::positive);
 }
 
+Sign reference_hit_distance(const Vec3& eye, const Vec3& d, const Vec3& a, const Vec3& b,
+                            const Vec3& c, const Vec3& light, double radius) {
+  const QV qa = q(a), ab = q(b) - qa, ac = q(c) - qa, qd = q(d);
+  const Q f = det(ab, ac, q(eye) - qa), g = det(ab, ac, qd);
+  const QV w = g * (q(eye) - q(light)) - f * qd;
+  return sign_of(dot(w, w) - g * g * Q(radius) * Q(radius));
+}
+
+TEST(HitDistance, EqualsRationalsOnSpheresThroughTheHitAndAFewUlpsOff) {
+  // Asked at every sample on a surface a light's sphere cuts: near the
+  // sphere its filter must hand over to exact arithmetic, never guess.
+  // Radii are the rounded |H - L| and a few ulps either side; coordinates
+  // from 1e-3 to 1e6.
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  int decided_off = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const double scale = std::pow(10.0, -3 + (k % 10));
+    const auto point = [&] { return Vec3{unit(rng), unit(rng), unit(rng)} * scale; };
+    const Vec3 eye = point(), a = point(), b = point(), c = point(), light = point();
+    const Vec3 d = a + (b - a) * 0.25 + (c - a) * 0.25 - eye;  // toward the triangle
+    if (reference_orientation(a, HPoint::point(b), HPoint::point(c), HPoint::at_infinity(d)) ==
+        Sign::zero)
+      continue;
+    // H in doubles (near the exact hit), and the sphere through it.
+    const QV qa = q(a), ab = q(b) - qa, ac = q(c) - qa;
+    const Q t = -det(ab, ac, q(eye) - qa) / det(ab, ac, q(d));
+    const Vec3 h = eye + CGAL::to_double(t) * d;
+    double r = length(h - light);
+    for (int step = -3; step <= 3; ++step) {
+      double radius = r;
+      for (int n = 0; n < std::abs(step); ++n)
+        radius = std::nextafter(radius, step > 0 ? INFINITY : 0.0);
+      const Sign want = reference_hit_distance(eye, d, a, b, c, light, radius);
+      ASSERT_EQ(compare_hit_distance(eye, d, a, b, c, light, radius), want)
+          << k << " step " << step;
+    }
+    // Far from the sphere: the answer is the plain one.
+    const Sign far = compare_hit_distance(eye, d, a, b, c, light, r * 0.5);
+    EXPECT_EQ(far, reference_hit_distance(eye, d, a, b, c, light, r * 0.5));
+    decided_off += far == Sign::positive;
+  }
+  EXPECT_GT(decided_off, 2500);  // the loop is not vacuous
+}
+
 TEST(Collinear, AndParallelAreExact) {
   const double tiny = std::ldexp(1.0, -20), huge = std::ldexp(1.0, 20);
   EXPECT_TRUE(collinear({0, 0, 0}, {tiny, 2 * tiny, 3 * tiny}, {huge, 2 * huge, 3 * huge}));

@@ -29,8 +29,7 @@ RenderOptions ray_options(double epsilon = RayOptions{}.epsilon, unsigned thread
 }
 
 ValidationReport validate(const geometry::Scene& scene, const Frame& frame) {
-  return validate_render(scene, ShadowChannels{frame.width, frame.height, frame.shadow},
-                         {.samples = {}, .seed = 1, .threads = 2});
+  return validate_render(scene, shadow_channels(frame), {.samples = {}, .seed = 1, .threads = 2});
 }
 
 std::uint64_t sum(const ValidationReport& r, std::uint64_t LightReport::*field) {
@@ -174,8 +173,8 @@ TEST(RayMethod, SameBytesForAnyThreadCount) {
   for (const unsigned threads : {2u, 3u}) {
     const Frame other = render(scene, ray_options(RayOptions{}.epsilon, threads));
     EXPECT_EQ(other.beauty, one.beauty) << threads;
-    EXPECT_EQ(other.shadow, one.shadow) << threads;
-    EXPECT_EQ(other.count, one.count) << threads;
+    EXPECT_EQ(other.shadow_planes(), one.shadow_planes()) << threads;
+    EXPECT_EQ(other.count_planes(), one.count_planes()) << threads;
     EXPECT_EQ(other.depth, one.depth) << threads;
   }
 }
@@ -192,7 +191,7 @@ TEST(RayMethod, NonCastingModelShadowsNothing) {
     if (with_pane.depth[p] != without.depth[p]) continue;  // the pane is seen here
     ++compared;
     for (std::size_t l = 0; l < with_pane.lights(); ++l)
-      EXPECT_EQ(with_pane.shadow[l][p], without.shadow[l][p]) << l << " " << p;
+      EXPECT_EQ(with_pane.shadow(l, p), without.shadow(l, p)) << l << " " << p;
   }
   EXPECT_GT(compared, 4000);
 }

@@ -63,15 +63,15 @@ RenderOptions map_options(const ShadowMapOptions& map, unsigned threads = 2) {
 }
 
 ValidationReport score(const geometry::Scene& scene, const Frame& frame) {
-  return validate_render(scene, ShadowChannels{frame.width, frame.height, frame.shadow}, {});
+  return validate_render(scene, shadow_channels(frame), {});
 }
 
 /// Whether the oracle's class changes within `radius` pixels of (i, j).
 bool near_shadow_boundary(const Frame& exact, int i, int j, int radius, std::size_t light) {
-  const float here = exact.shadow[light][exact.pixel(i, j)];
+  const float here = exact.shadow(light, exact.pixel(i, j));
   for (int b = std::max(0, j - radius); b <= std::min(exact.height - 1, j + radius); ++b)
     for (int a = std::max(0, i - radius); a <= std::min(exact.width - 1, i + radius); ++a)
-      if (exact.shadow[light][exact.pixel(a, b)] != here) return true;
+      if (exact.shadow(light, exact.pixel(a, b)) != here) return true;
   return false;
 }
 
@@ -88,7 +88,7 @@ TEST(ShadowMap, FloorAndBoxAgreeWithTheOracleExceptAtShadowEdges) {
   int shadowed = 0;
   for (int j = 0; j < frame.height; ++j)
     for (int i = 0; i < frame.width; ++i) {
-      shadowed += exact.shadow[0][exact.pixel(i, j)] == kShadowShadowed;
+      shadowed += exact.shadow(0, exact.pixel(i, j)) == kShadowShadowed;
       if (report.mask[frame.pixel(i, j)] == 2) {
         EXPECT_TRUE(near_shadow_boundary(exact, i, j, 2, 0)) << i << "," << j;
       }
@@ -183,7 +183,7 @@ TEST(ShadowMap, PointLightShadowsAcrossCubeCorners) {
   const ValidationReport report = score(scene, frame);
   EXPECT_LE(report.lights[0].mismatches, 12u);
   int shadowed = 0;
-  for (float v : frame.shadow[0]) shadowed += v == kShadowShadowed;
+  for (float v : frame.shadow_plane(0)) shadowed += v == kShadowShadowed;
   EXPECT_GT(shadowed, 200);
   EXPECT_GE(stats.map_views, 3u);  // the +x, +y and +z faces at least
 }
@@ -234,8 +234,8 @@ TEST(ShadowMap, SameBytesForAnyThreadCount) {
   for (const unsigned threads : {2u, 3u}) {
     const Frame other = render(scene, map_options(map, threads));
     EXPECT_EQ(one.beauty, other.beauty) << threads;
-    EXPECT_EQ(one.shadow, other.shadow) << threads;
-    EXPECT_EQ(one.count, other.count) << threads;
+    EXPECT_EQ(one.shadow_planes(), other.shadow_planes()) << threads;
+    EXPECT_EQ(one.count_planes(), other.count_planes()) << threads;
     EXPECT_EQ(one.depth, other.depth) << threads;
   }
 }
@@ -261,7 +261,7 @@ TEST(ShadowMap, PercentageCloserFilterKeepsTheAovHard) {
   // sees the light), and filtering costs no accuracy at the edges.
   const geometry::Scene scene = floor_and_box(point_light({2.5, 5, 1.5}));
   const Frame frame = render(scene, map_options({.resolution = 512, .pcf = 5}));
-  for (const float v : frame.shadow[0]) EXPECT_TRUE(v == kShadowLit || v == kShadowShadowed);
+  for (const float v : frame.shadow_plane(0)) EXPECT_TRUE(v == kShadowLit || v == kShadowShadowed);
   EXPECT_LE(score(scene, frame).lights[0].mismatches, 25u);
 }
 

@@ -121,9 +121,9 @@ int expect_matches_reference(const CameraFrame& frame, const std::vector<RasterP
         EXPECT_EQ(result.depth[p], std::numeric_limits<double>::infinity());
       for (std::size_t l = 0; l < lights; ++l) {
         if (result.light_mask[p] & light_bit(l)) continue;
-        EXPECT_EQ(result.count[p * lights + l], ref.count[l])
+        EXPECT_EQ(result.count_at(l, p), ref.count[l])
             << "pixel " << i << "," << j << " light " << l;
-        failures += result.count[p * lights + l] != ref.count[l];
+        failures += result.count_at(l, p) != ref.count[l];
       }
     }
   return uncertain;
@@ -240,7 +240,7 @@ TEST(Scanline, ShadowPolygonAddsSignedNbCInFrontOfTheSurfaceOnly) {
   const RasterPolygon other = shadow(square_z(0, 0, 2, 2, 3), 1, 1);
 
   const auto at = [&](const ScanlineResult& r, int i, int j, std::size_t l) {
-    return r.count[(static_cast<std::size_t>(j) * 16 + i) * 2 + l];
+    return r.count_at(l, static_cast<std::size_t>(j) * 16 + i);
   };
   const std::vector<RasterPolygon> s1{floor, ccw, other}, s2{floor, cw, other}, s3{floor, behind};
   const ScanlineResult r1 = scanline_render(frame, s1, 2, 1);
@@ -291,13 +291,13 @@ TEST(ScanlineEyePlanes, CountAtEveryPixelOnTheirSideAndFlagThoseOnThePlane) {
       ASSERT_EQ(r.visible[p], 1);
       const bool on_x0 = d.x == 0;
       const bool on_diagonal = d.y == d.x;
-      EXPECT_EQ(r.count[p * 2], !on_x0 && d.x > 0 ? 3 : 0) << i << "," << j;
-      EXPECT_EQ(r.count[p * 2 + 1], !on_diagonal && d.y > d.x ? -1 : 0) << i << "," << j;
+      EXPECT_EQ(r.count_at(0, p), !on_x0 && d.x > 0 ? 3 : 0) << i << "," << j;
+      EXPECT_EQ(r.count_at(1, p), !on_diagonal && d.y > d.x ? -1 : 0) << i << "," << j;
       const std::uint64_t mask = (on_x0 ? light_bit(0) : 0) | (on_diagonal ? light_bit(1) : 0);
       EXPECT_EQ(r.light_mask[p], mask) << i << "," << j;
       EXPECT_EQ(r.uncertain[p], mask ? kLightsUncertain : 0) << i << "," << j;
-      threes += r.count[p * 2] == 3;
-      toggled += r.count[p * 2 + 1] == -1;
+      threes += r.count_at(0, p) == 3;
+      toggled += r.count_at(1, p) == -1;
       flagged += mask != 0;
     }
   EXPECT_EQ(threes, 8 * 16);
@@ -319,8 +319,8 @@ TEST(Scanline, ShadowPolygonReachingBehindTheEyeCountsItsFrontPart) {
   EXPECT_LT(uncertain, 8);
   int lit0 = 0, lit1 = 0;
   for (std::size_t p = 0; p < r.visible.size(); ++p) {
-    lit0 += r.count[p * 2] != 0;
-    lit1 += r.count[p * 2 + 1] != 0;
+    lit0 += r.count_at(0, p) != 0;
+    lit1 += r.count_at(1, p) != 0;
   }
   EXPECT_GT(lit0, 50);  // the test is not vacuous
   EXPECT_GT(lit1, 50);
@@ -343,7 +343,7 @@ TEST(Scanline, PolygonCrossingTheNearPlaneAtEveryEdgeKeepsAllItsPieces) {
   int seen = 0, counted = 0;
   for (std::size_t p = 0; p < r.visible.size(); ++p) {
     seen += r.visible[p] == 4;
-    counted += r.count[p] != 0;
+    counted += r.count_at(0, p) != 0;
   }
   EXPECT_GT(seen, 60);  // the test is not vacuous
   EXPECT_GT(counted, 20);
@@ -526,7 +526,7 @@ TEST(ScanlineUncertainty, RandomSceneCertainPixelsMatchBruteForce) {
     int seen = 0, counted = 0;
     for (std::size_t p = 0; p < r.visible.size(); ++p) {
       seen += r.visible[p] >= 0;
-      counted += r.count[2 * p] != 0 || r.count[2 * p + 1] != 0;
+      counted += r.count_at(0, p) != 0 || r.count_at(1, p) != 0;
     }
     EXPECT_GT(seen, 96 * 72 / 5);
     EXPECT_GT(counted, seen / 5);
@@ -609,10 +609,10 @@ TEST(Scanline, TwistedGroupsToggleTheirFlagInsteadOfAddingNbC) {
       const bool in_c = std::abs(tc * d.x) <= 1 && std::abs(tc * d.y) <= 1;
       const std::size_t p = static_cast<std::size_t>(j) * 16 + i;
       const int flip0 = (in_a != in_b) ? 1 : 0, flip1 = in_c ? 1 : 0;
-      EXPECT_EQ(r0.count[p * 2 + 0], flip0) << i << "," << j;
-      EXPECT_EQ(r0.count[p * 2 + 1], flip1) << i << "," << j;
-      EXPECT_EQ(r1.count[p * 2 + 0], -flip0) << i << "," << j;
-      EXPECT_EQ(r1.count[p * 2 + 1], -flip1) << i << "," << j;
+      EXPECT_EQ(r0.count_at(0, p), flip0) << i << "," << j;
+      EXPECT_EQ(r0.count_at(1, p), flip1) << i << "," << j;
+      EXPECT_EQ(r1.count_at(0, p), -flip0) << i << "," << j;
+      EXPECT_EQ(r1.count_at(1, p), -flip1) << i << "," << j;
       odd += flip0;
       both += in_a && in_b;
     }
