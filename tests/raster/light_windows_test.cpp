@@ -6,9 +6,11 @@
 // fields of view, coordinates far from the origin); the volume and ray
 // renders with windows are compared byte for byte with those without.
 #include <geometry/io/scene_json.h>
+#include <geometry/oracle/shadow_oracle.h>
 #include <geometry/sample_ray.h>
 #include <raster/light_windows.h>
 #include <raster/render.h>
+#include <raster/validate.h>
 #include <tests/support/many_light_scenes.h>
 #include <tests/support/rational_vec.h>
 #include <tests/support/scene_builders.h>
@@ -225,6 +227,37 @@ TEST(LightWindows, RayRendersAreTheSameWithAndWithoutThem) {
   // pixel's width or more from the ball in angle, far beyond float error.
   expect_same_on_scenes(Method::ray, {"night_city.json", "two_lights.json",
                                       "bergeron/fig15_sphere_of_influence.json"});
+}
+
+TEST(LightWindows, TheOraclesTruthIsTheSameAsAskingEveryPair) {
+  // oracle_truth skips the predicates outside a light's window; asked
+  // anyway, every one of those pairs must be out of range and no boundary.
+  geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/night_city.json");
+  scene.camera.width = 80;
+  scene.camera.height = 45;
+  ValidateOptions options;
+  options.threads = 2;
+  const OracleTruth truth = oracle_truth(scene, options);
+  const geometry::SceneIndex index(scene);
+  const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
+  std::size_t skipped_before = 0;
+  const LightWindows windows = light_windows(camera, scene.lights);
+  for (std::size_t k = 0; k < truth.pixels.size(); ++k) {
+    const std::size_t p = truth.pixels[k];
+    const int i = static_cast<int>(p % 80), j = static_cast<int>(p / 80);
+    const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
+    const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
+    ASSERT_EQ(truth.hit[k], hit ? 1 : 0);
+    if (!hit) continue;
+    for (std::uint32_t l = 0; l < truth.lights; ++l) {
+      const geometry::ShadowAnswer answer = geometry::classify_sample(index, ray, *hit, l);
+      ASSERT_EQ(truth.cls[k * truth.lights + l], answer.cls) << i << "," << j << " light " << l;
+      ASSERT_EQ(truth.boundary[k * truth.lights + l], answer.boundary ? 1 : 0);
+      skipped_before += !windows.rect(l).contains(i, j);
+    }
+  }
+  EXPECT_GT(skipped_before, truth.pixels.size() * 5);  // many pairs were never asked
 }
 
 TEST(LightWindows, ManyLampsKeepOnlyThePixelsTheyReach) {
