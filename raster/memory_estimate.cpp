@@ -62,21 +62,28 @@ u64 add(u64 a, u64 b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; }
 /// builder skips the others before looking at a polygon: a 1,024-lamp city
 /// of 3,845 buildings was refused at 22.6 GiB for volumes of 0.2 GB).
 u64 volume_bytes_all_lights(const geometry::Scene& scene) {
+  // Per polygon: two caps and a side per edge, ~160 bytes each.
+  const auto polygon_bytes = [](const geometry::Polygon& p) { return 160 * (2 + p.size()); };
   std::vector<u64> per_model;
   for (const geometry::Model& model : scene.models) {
-    u64 polygons = 0, edges = 0;
-    if (model.casts_shadows) {
-      polygons = model.polygons.size();
-      for (const geometry::Polygon& p : model.polygons) edges += p.size();
-    }
-    per_model.push_back(160 * (2 * polygons + edges));
+    u64 bytes = 0;
+    if (model.casts_shadows)
+      for (const geometry::Polygon& p : model.polygons) bytes += polygon_bytes(p);
+    per_model.push_back(bytes);
   }
   const geometry::ModelReach reach(scene);
-  std::vector<std::uint32_t> models;
+  std::vector<std::uint32_t> models, polygons;
   u64 bytes = 0;
   for (const geometry::Light& light : scene.lights) {
     reach.models(light, models);
-    for (const std::uint32_t m : models) bytes = add(bytes, per_model[m]);
+    for (const std::uint32_t m : models) {
+      if (!reach.polygons(m, light, polygons)) {
+        bytes = add(bytes, per_model[m]);
+        continue;
+      }
+      for (const std::uint32_t p : polygons)
+        bytes = add(bytes, polygon_bytes(scene.models[m].polygons[p]));
+    }
   }
   return bytes;
 }

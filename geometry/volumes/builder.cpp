@@ -312,10 +312,17 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
   stats.culled_polygons = share.reach->casting_polygons();
   for (const std::uint32_t mi : reached) stats.culled_polygons -= scene.models[mi].polygons.size();
 
+  std::vector<std::uint32_t> within;
   for (const std::uint32_t mi : reached) {
     const Model& model = scene.models[mi];
     const ModelTables& tables = share.tables[mi];
-    const std::vector<PolygonRole> roles = polygon_roles(model, tables.surfaces, lp);
+    // A model the sphere cuts: only its polygons within reach cast (the
+    // others shadow no sample in range; model_reach.h).
+    const bool part = share.reach->polygons(mi, light, within);
+    if (part) stats.culled_polygons += model.polygons.size() - within.size();
+    const std::vector<PolygonRole> roles =
+        polygon_roles(model, tables.surfaces, lp,
+                      part ? std::optional<std::span<const std::uint32_t>>(within) : std::nullopt);
     std::vector<std::uint32_t> casting;
     for (std::uint32_t p = 0; p < roles.size(); ++p)
       if (roles[p].facing != Sign::zero) casting.push_back(p);
@@ -331,7 +338,7 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
       if (light.light_end && distance > *light.light_end) {
         // Wholly outside the sphere: everything it could shadow is out of range.
         ++stats.culled_models;
-        stats.culled_polygons += model.polygons.size();
+        stats.culled_polygons += part ? within.size() : model.polygons.size();
         continue;
       }
     }

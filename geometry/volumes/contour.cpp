@@ -16,9 +16,17 @@ std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light) 
 
 std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
                                        const HPoint& light) {
+  return polygon_roles(model, surfaces, light, std::nullopt);
+}
+
+std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
+                                       const HPoint& light,
+                                       std::optional<std::span<const std::uint32_t>> only) {
   std::vector<PolygonRole> roles(model.polygons.size());
   std::vector<Vec3> points;
-  for (std::size_t p = 0; p < model.polygons.size(); ++p) {
+  const std::size_t n = only ? only->size() : model.polygons.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t p = only ? (*only)[k] : k;
     const Polygon& polygon = model.polygons[p];
     const PolygonSurface& surface = surfaces[p];
     if (surface.shape == PolygonShape::degenerate) continue;

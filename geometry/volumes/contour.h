@@ -20,6 +20,7 @@
 #include <geometry/volumes/model_edges.h>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -62,6 +63,13 @@ std::vector<PolygonRole> polygon_roles(const Model& model, const HPoint& light);
 /// when one model is asked about many lights.
 std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
                                        const HPoint& light);
+/// The same for the listed polygons only (`only`, when given); every other
+/// polygon gets facing zero, as one that casts nothing: its edges with a
+/// listed polygon become boundary contour edges. For a light of limited
+/// reach, whose volume needs only the polygons within it (model_reach.h).
+std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const PolygonSurface> surfaces,
+                                       const HPoint& light,
+                                       std::optional<std::span<const std::uint32_t>> only);
 
 /// Edges of nonzero nb_c, in the order their first polygon lists them;
 /// polygons with facing 0 and twisted polygons add no nb_c.

@@ -1,6 +1,7 @@
 #include <geometry/exact/segment_crossing.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <geometry/volumes/eye_start.h>
+#include <geometry/volumes/model_reach.h>
 #include <util/parallel_for.h>
 
 #include <algorithm>
@@ -86,6 +87,7 @@ std::optional<std::vector<EyePlaneSide>> eye_planes(const ShadowVolumes& volumes
 EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsigned threads) {
   const Scene& scene = index.scene();
   const std::size_t lights = scene.lights.size();
+  const ModelReach reach(scene);
   const Vec3& eye = scene.camera.eye;
   EyeStart start;
   start.count.assign(lights, 0);
@@ -130,6 +132,9 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsign
       // A model without a volume for this light (outside its sphere of
       // influence) adds nothing: the eye is then beyond it, out of range.
       if (volumes.extrusion[l][p.model] == 0) continue;
+      // Nor does a part of a model beyond the light's reach: the builder
+      // left it out of the model's volume (model_reach.h), by the same rule.
+      if (!reach.has_volume(p.model, p.polygon, scene.lights[l])) continue;
       ++start.count[l];
       if (const auto it = group_of.find({l, p.model, p.polygon}); it != group_of.end())
         start.in_shadow[it->second] = 1;

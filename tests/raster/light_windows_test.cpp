@@ -260,6 +260,43 @@ TEST(LightWindows, TheOraclesTruthIsTheSameAsAskingEveryPair) {
   EXPECT_GT(skipped_before, truth.pixels.size() * 5);  // many pairs were never asked
 }
 
+TEST(LightWindows, ACityAsOneMeshShadowsAsACityOfBuildings) {
+  // GIS cities come as one mesh: every lamp then cuts the one model, and
+  // its volume keeps only the parts (buildings) within reach
+  // (model_reach.h). The
+  // counts, classes and depths must be those of the city of separate
+  // buildings (whose lamps skip whole models), and every pixel must
+  // validate.
+  geometry::Scene city =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/night_city.json");
+  city.camera.width = 192;
+  city.camera.height = 108;
+  geometry::Scene merged = city;
+  geometry::Model one;
+  one.name = "city";
+  for (std::size_t m = 1; m < city.models.size(); ++m) {  // model 0: the streets
+    const auto base = static_cast<std::uint32_t>(one.vertices.size());
+    one.vertices.insert(one.vertices.end(), city.models[m].vertices.begin(),
+                        city.models[m].vertices.end());
+    for (geometry::Polygon polygon : city.models[m].polygons) {
+      for (std::uint32_t& v : polygon) v += base;
+      one.polygons.push_back(polygon);
+    }
+  }
+  merged.models = {city.models[0], one};
+  RenderStats buildings_stats, mesh_stats;
+  const Frame buildings = render(city, {.method = Method::volume, .threads = 2}, &buildings_stats);
+  const Frame mesh = render(merged, {.method = Method::volume, .threads = 2}, &mesh_stats);
+  EXPECT_EQ(mesh.shadow_planes(), buildings.shadow_planes());
+  EXPECT_EQ(mesh.count_planes(), buildings.count_planes());
+  EXPECT_EQ(mesh.depth, buildings.depth);
+  const ValidationReport report = validate_render(merged, shadow_channels(mesh), {});
+  EXPECT_EQ(report.total_mismatches(), 0u);
+  // The same volumes, only in another order: a lamp keeps the buildings it
+  // reaches, whether they are models or parts of one.
+  EXPECT_EQ(mesh_stats.shadow_polygons, buildings_stats.shadow_polygons);
+}
+
 TEST(LightWindows, ManyLampsKeepOnlyThePixelsTheyReach) {
   // night_city.json: 64 street lamps of reach 3.2 over a city seen whole.
   geometry::Scene scene =

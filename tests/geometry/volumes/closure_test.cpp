@@ -13,6 +13,7 @@
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/eye_start.h>
 #include <geometry/volumes/far_ends.h>
+#include <geometry/volumes/model_reach.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
@@ -25,6 +26,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 #include <tuple>
 
 namespace umbra::geometry {
@@ -89,7 +91,11 @@ std::vector<std::vector<Light>> light_sets() {
           // vertex v7, outside the cube.
           {point({std::nextafter(2.5, 3.0), 1.5, std::nextafter(-0.5, 0.0)})},
           // At the twisted quad's edge v0-v1 midpoint, the least double below.
-          {point({2.5, 1.25, -std::numeric_limits<double>::denorm_min()})}};
+          {point({2.5, 1.25, -std::numeric_limits<double>::denorm_min()})},
+          // A reach that cuts models: the bent cube's far faces, part of
+          // the fins, are beyond it and left out of their volumes
+          // (model_reach.h), the first cube wholly.
+          {point({0.5, 1.0, 0.5}, 1.8)}};
 }
 
 using Key = std::tuple<std::uint64_t, std::uint64_t, std::uint64_t>;
@@ -210,6 +216,51 @@ std::optional<int> crossing_count(const ShadowVolumes& volumes, std::uint32_t li
     if (std::abs(c) % 2 == 1)
       total += !group_start.empty() && group_start[static_cast<std::size_t>(g)] ? -1 : 1;
   return total;
+}
+
+TEST(VolumeClosure, PartsBeyondReachAreLeftOutOfTheirModelsVolumes) {
+  // The first two models as one: a cube beyond the reach and the bent cube
+  // within it, two parts of one model. The light's volume has caps of the
+  // bent cube's polygons only, and the eye's count leaves out the same.
+  Scene scene = test_scene({point({0.5, 1.0, 0.5}, 1.8)});
+  Model both = scene.models[1];
+  const auto base = static_cast<std::uint32_t>(both.vertices.size());
+  both.vertices.insert(both.vertices.end(), scene.models[2].vertices.begin(),
+                       scene.models[2].vertices.end());
+  for (Polygon polygon : scene.models[2].polygons) {
+    for (std::uint32_t& v : polygon) v += base;
+    both.polygons.push_back(polygon);
+  }
+  scene.models[1] = both;
+  scene.models.erase(scene.models.begin() + 2);
+  const ShadowVolumes volumes = build_shadow_volumes(scene);
+  const ModelReach reach(scene);
+  std::set<std::uint32_t> capped;
+  for (const ShadowPolygon& p : volumes.polygons)
+    if (p.model == 1) {
+      EXPECT_GE(p.polygon, 6u) << "a polygon of the cube beyond reach casts";
+      EXPECT_TRUE(reach.has_volume(1, p.polygon, scene.lights[0]));
+      if (p.type != ShadowPolygonType::side) capped.insert(p.polygon);
+    }
+  EXPECT_FALSE(capped.empty());
+  for (std::uint32_t q = 0; q < 6; ++q) EXPECT_FALSE(reach.has_volume(1, q, scene.lights[0]));
+  EXPECT_GE(volumes.stats[0].culled_polygons, 6u);
+  // And the counts from far outside and at eyes anywhere agree with the
+  // oracle and the volumes, as for every light set below.
+  const SceneIndex index(scene);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coord(-3.0, 3.0), height(-0.4, 2.5);
+  int checked = 0;
+  for (int trial = 0; trial < 3000 && checked < 300; ++trial) {
+    const Vec3 x{coord(rng), height(rng), coord(rng)};
+    if (length(x - scene.lights[0].position) >= 1.8 * 0.999) continue;
+    const auto odd = shadowing_polygons(index, x, 0);
+    const auto count = crossing_count(volumes, 0, x + Vec3{1e9, 3e8, -2e8}, x);
+    if (!odd || !count) continue;
+    EXPECT_EQ(*count, static_cast<int>(odd->size()));
+    ++checked;
+  }
+  EXPECT_GT(checked, 200);
 }
 
 TEST(VolumeClosure, CountFromOutsideIsTheNumberOfShadowingPolygons) {
