@@ -79,7 +79,7 @@ std::string quoted(std::string_view token) {
 }
 
 template <typename Real>
-Real parse_real(std::string_view token, const std::string& where, std::string_view what) {
+Real parse_real(std::string_view token, const Where& where, std::string_view what) {
   std::string_view digits = token;
   // from_chars takes no '+'; the formats here allow one ("+1e+2").
   if (!digits.empty() && digits[0] == '+') {
@@ -103,25 +103,24 @@ Real parse_real(std::string_view token, const std::string& where, std::string_vi
 
 }  // namespace
 
-double parse_double(std::string_view token, const std::string& where, std::string_view what) {
+double parse_double(std::string_view token, const Where& where, std::string_view what) {
   return parse_real<double>(token, where, what);
 }
 
-double parse_coordinate(std::string_view token, const std::string& where) {
+double parse_coordinate(std::string_view token, const Where& where) {
   const double value = parse_real<double>(token, where, "coordinate");
   if (!std::isfinite(value))
     throw util::InputError(where, "coordinate " + quoted(token) + " is not finite");
   return value;
 }
 
-double parse_float_as_double(std::string_view token, const std::string& where,
-                             std::string_view what) {
+double parse_float_as_double(std::string_view token, const Where& where, std::string_view what) {
   // The float the text denotes, widened exactly: that is the value a PLY
   // `float` property holds, not the double nearest to the text.
   return static_cast<double>(parse_real<float>(token, where, what));
 }
 
-std::int64_t parse_integer(std::string_view token, const std::string& where, std::string_view what,
+std::int64_t parse_integer(std::string_view token, const Where& where, std::string_view what,
                            std::int64_t min, std::int64_t max) {
   std::string_view digits = token;
   if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);

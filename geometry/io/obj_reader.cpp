@@ -21,7 +21,7 @@ namespace {
 
 // The vertex index of one face reference ("7", "7/2", "7//3", "-1/2/3"), 0-based.
 std::uint32_t vertex_index(std::string_view reference, std::size_t vertex_count,
-                           const std::string& where) {
+                           const Where& where) {
   const std::string_view index_text = reference.substr(0, reference.find('/'));
   constexpr std::int64_t kLimit = std::numeric_limits<std::int64_t>::max();
   const std::int64_t index = parse_integer(index_text, where, "face index", -kLimit, kLimit);
@@ -54,7 +54,7 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
     std::string_view keyword;
     if (!tokens.next(keyword)) continue;
     if (keyword == "v") {
-      const std::string where = at_line(name, lines.line_number());
+      const Where where(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n != 3 && n != 4 && n != 6 && n != 7) {
         throw util::InputError(where,
@@ -81,7 +81,7 @@ PolygonSoup parse_obj(std::string_view bytes, const std::string& name) {
       }
       soup.vertices.push_back(p);
     } else if (keyword == "f" || keyword == "fo") {
-      const std::string where = at_line(name, lines.line_number());
+      const Where where(name, lines.line_number());
       const std::size_t n = tokens.count_remaining();
       if (n < 3) {
         throw util::InputError(

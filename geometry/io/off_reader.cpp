@@ -97,7 +97,7 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
           at_line(name, lines.line_number()),
           "file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
     }
-    const std::string where = at_line(name, lines.line_number());
+    const Where where(name, lines.line_number());
     Tokens values(line);
     if (values.count_remaining() < 3) throw util::InputError(where, "vertex needs 3 coordinates");
     Vec3 p;
@@ -116,7 +116,7 @@ PolygonSoup parse_off(std::string_view bytes, const std::string& name) {
           at_line(name, lines.line_number()),
           "file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
     }
-    const std::string where = at_line(name, lines.line_number());
+    const Where where(name, lines.line_number());
     Tokens values(line);
     values.next(token);
     const std::size_t available = values.count_remaining();
