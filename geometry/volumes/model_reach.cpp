@@ -2,8 +2,11 @@
 #include <geometry/volumes/model_reach.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <optional>
+#include <unordered_map>
 
 namespace umbra::geometry {
 
@@ -82,10 +85,31 @@ const ModelReach::Parts& ModelReach::parts(std::uint32_t model) const {
   Parts& t = *parts_[model];
   std::call_once(t.once, [&] {
     const Model& m = scene_.models[model];
-    // Union-find over the vertex indices; a polygon's part is its first
-    // vertex's root, numbered in order of first appearance.
+    // Union-find over the vertices, those at one position (bit for bit,
+    // -0 and +0 alike: how model_edges matches edges) joined first, so
+    // that a triangle soup (an STL file) is one part per connected surface
+    // rather than per triangle; a polygon's part is its first vertex's
+    // root, numbered in order of first appearance.
     std::vector<std::uint32_t> root(m.vertices.size());
     for (std::uint32_t v = 0; v < root.size(); ++v) root[v] = v;
+    {
+      using Key = std::array<std::uint64_t, 3>;
+      struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+          return std::hash<std::uint64_t>{}(k[0] * 0x9E3779B97F4A7C15ull ^ k[1]) ^
+                 std::hash<std::uint64_t>{}(k[2] + 0x632BE59BD9B4E019ull);
+        }
+      };
+      std::unordered_map<Key, std::uint32_t, KeyHash> first_at;
+      first_at.reserve(m.vertices.size());
+      for (std::uint32_t v = 0; v < m.vertices.size(); ++v) {
+        const Vec3& x = m.vertices[v];
+        const Key key{std::bit_cast<std::uint64_t>(x.x + 0.0),
+                      std::bit_cast<std::uint64_t>(x.y + 0.0),
+                      std::bit_cast<std::uint64_t>(x.z + 0.0)};
+        root[v] = first_at.emplace(key, v).first->second;  // a smaller index: already a root
+      }
+    }
     const auto find = [&](std::uint32_t v) {
       while (root[v] != v) v = root[v] = root[root[v]];
       return v;

@@ -11,7 +11,7 @@
 // a polygon shadows a sample in range only where the segment from the
 // sample to the light crosses it, and that segment lies in the ball. So a
 // polygon wholly outside the ball shadows no sample in range. A model is
-// cut into its connected parts (polygons sharing a vertex); a part whose
+// cut into its connected parts (polygons sharing a vertex position); a part whose
 // box lies wholly beyond the reach is left out whole, so the volume of the
 // rest is the same closed volume that part-less model would have: no edge
 // between a kept and a left-out polygon, no side the cut would add. It
@@ -57,8 +57,8 @@ class ModelReach {
   std::uint64_t casting_polygons() const { return casting_polygons_; }
 
  private:
-  /// A model's connected parts (polygons sharing a vertex), made on first
-  /// use: each polygon's part, each part's polygons (by part, in
+  /// A model's connected parts (polygons sharing a vertex position), made
+  /// on first use: each polygon's part, each part's polygons (by part, in
   /// increasing order) and box, and a tree over the boxes.
   struct Parts {
     std::once_flag once;

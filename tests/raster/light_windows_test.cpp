@@ -295,6 +295,24 @@ TEST(LightWindows, ACityAsOneMeshShadowsAsACityOfBuildings) {
   // The same volumes, only in another order: a lamp keeps the buildings it
   // reaches, whether they are models or parts of one.
   EXPECT_EQ(mesh_stats.shadow_polygons, buildings_stats.shadow_polygons);
+
+  // As a soup (every face its own vertices, as STL files come): parts are
+  // joined by position, so the same buildings, the same volumes.
+  geometry::Model soup;
+  for (const geometry::Polygon& polygon : one.polygons) {
+    geometry::Polygon own;
+    for (const std::uint32_t v : polygon) {
+      own.push_back(static_cast<std::uint32_t>(soup.vertices.size()));
+      soup.vertices.push_back(one.vertices[v]);
+    }
+    soup.polygons.push_back(own);
+  }
+  merged.models[1] = soup;
+  RenderStats soup_stats;
+  const Frame soup_frame = render(merged, {.method = Method::volume, .threads = 2}, &soup_stats);
+  EXPECT_EQ(soup_frame.shadow_planes(), buildings.shadow_planes());
+  EXPECT_EQ(soup_frame.count_planes(), buildings.count_planes());
+  EXPECT_EQ(soup_stats.shadow_polygons, buildings_stats.shadow_polygons);
 }
 
 TEST(LightWindows, ManyLampsKeepOnlyThePixelsTheyReach) {
