@@ -128,6 +128,7 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
   // pass 64 MB (a thousand lights' channels); the file is the same bytes.
   const std::size_t width = static_cast<std::size_t>(frame.width);
   const int block_rows = width * channels * sizeof(float) * 64 > (std::size_t{64} << 20) ? 16 : 64;
+  const bool whole = frame.windows.all_whole();
   write_atomically(
       path, header, codec::Pixels::float32, block_rows, [&](int y0, int y1, void* out) {
         float* const block = static_cast<float*>(out);
@@ -140,10 +141,13 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
             px[0] = frame.beauty[p * 3 + 0];
             px[1] = frame.beauty[p * 3 + 1];
             px[2] = frame.beauty[p * 3 + 2];
-            // Outside every window (Frame::shadow, count).
-            const float outside = frame.hit[p] ? kShadowOutOfRange : kShadowLit;
-            std::fill(px + 3, px + 3 + lights, outside);
-            std::fill(px + 3 + lights, px + 3 + 2 * lights, 0.0f);
+            // Outside every window (Frame::shadow, count); with every
+            // window whole, none: the loop below writes every channel.
+            if (!whole) {
+              const float outside = frame.hit[p] ? kShadowOutOfRange : kShadowLit;
+              std::fill(px + 3, px + 3 + lights, outside);
+              std::fill(px + 3 + lights, px + 3 + 2 * lights, 0.0f);
+            }
             px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
           }
           // Then each light whose window holds the row, over its span.

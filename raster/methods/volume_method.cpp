@@ -189,10 +189,14 @@ Frame render_volume(const geometry::SceneIndex& index,
     const bool whole = windows.all_whole();
     std::optional<RowSweep> sweep;
     std::span<const std::uint32_t> here = windows.row_lights(j);
+    // With every window whole, light k's count of the row's pixel i is at
+    // row_slot[k] + i: its place worked out once a row, not once a pixel.
+    std::vector<std::size_t> row_slot;
     if (whole) {
       sample.lights.assign(here.begin(), here.end());
       sample.classes.resize(here.size());
       sample.counts.resize(here.size());
+      for (const std::uint32_t l : here) row_slot.push_back(windows.inside(l, 0, j));
     } else {
       sweep.emplace(windows, j);
     }
@@ -242,7 +246,9 @@ Frame render_volume(const geometry::SceneIndex& index,
             decide_exactly(ray, entry.hit, tri, pixel, k, l, sample);
             continue;
           }
-          sample.counts[k] = eye.count[l] + scan.count_at(l, i, j);
+          sample.counts[k] =
+              eye.count[l] + (whole ? scan.count[row_slot[k] + static_cast<std::size_t>(i)]
+                                    : scan.count_at(l, i, j));
           sample.classes[k] = class_of_count(sample.counts[k], pixel, l);
         }
         store_sample(scene, ray, sample, pixel, frame);
