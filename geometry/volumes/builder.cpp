@@ -316,8 +316,8 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
   for (const std::uint32_t mi : reached) {
     const Model& model = scene.models[mi];
     const ModelTables& tables = share.tables[mi];
-    // A model the sphere cuts: only its polygons within reach cast (the
-    // others shadow no sample in range; model_reach.h).
+    // A model the sphere cuts: only its connected parts within reach cast
+    // (the others shadow no sample in range; model_reach.h).
     const bool part = share.reach->polygons(mi, light, within);
     if (part) stats.culled_polygons += model.polygons.size() - within.size();
     const std::vector<PolygonRole> roles =

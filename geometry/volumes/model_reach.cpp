@@ -16,9 +16,6 @@ namespace {
 constexpr std::size_t kTreeModels = 64;
 
 double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
-}  // namespace
-
-namespace {
 
 /// The cube about a point light holding every point within `reach`,
 /// enlarged by far more than the rounding of its corners: a box a tree
