@@ -61,8 +61,8 @@ TEST(UnitBox, KeepsExactRelationsOfDecimalVertices) {
 }
 
 TEST(RealScenes, SceneDependsOnlyOnMeshNameSeedAndIndex) {
-  const auto dir =
-      test::write_test_meshes(std::filesystem::path(UMBRA_TEST_WORK_DIR) / "real-scenes");
+  const auto dir = test::write_test_meshes(
+      test::test_work_dir(std::filesystem::path(UMBRA_TEST_WORK_DIR) / "real-scenes"));
   const geometry::Model cube = load(dir / "cube.off");
   const GeneratedScene a = real_mesh_scene(cube, "cube.off", 3, 4, 48, 36);
   const GeneratedScene b = real_mesh_scene(cube, "cube.off", 3, 4, 48, 36);
@@ -100,8 +100,8 @@ TEST(RealScenes, EyeWithinSubnormalsOfItsTargetMovesAway) {
 }
 
 TEST(RealScenes, LightsAreWhereTheirNamesSay) {
-  const auto dir =
-      test::write_test_meshes(std::filesystem::path(UMBRA_TEST_WORK_DIR) / "real-scenes");
+  const auto dir = test::write_test_meshes(
+      test::test_work_dir(std::filesystem::path(UMBRA_TEST_WORK_DIR) / "real-scenes"));
   std::map<std::string, int> kinds;
   for (const char* file : {"cube.off", "tetra.obj"}) {
     const geometry::Model mesh = load(dir / file);

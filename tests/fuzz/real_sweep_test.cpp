@@ -19,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path meshes() {
-  return test::write_test_meshes(fs::path(UMBRA_TEST_WORK_DIR) / "sweep-meshes");
+  return test::write_test_meshes(
+      test::test_work_dir(fs::path(UMBRA_TEST_WORK_DIR) / "sweep-meshes"));
 }
 
 raster::Frame refuse(const geometry::Scene&, const raster::RenderOptions&, raster::RenderStats*) {
