@@ -1,7 +1,9 @@
+#include <geometry/exact/coordinate_range.h>
 #include <raster/light_windows.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -76,8 +78,6 @@ namespace {
 
 constexpr double kUnit = 0x1p-53;  // the unit roundoff of doubles
 
-double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
-
 /// The indices k whose centre k + 0.5 lies between the positions a and b
 /// (in either order), widened by one index each side for the rounding of
 /// the positions, clamped to [0, n]: a half-open range.
@@ -132,25 +132,30 @@ PixelRect light_window(const geometry::CameraFrame& c, const geometry::Light& li
   const double ray_error = 2 * d_prime * s * s * (1 + 1e-9);
 
   const Vec3& l = light.position;
-  const double radius = *light.light_end * (1 + 1e-9) + 1e-12 * max_abs(l);
-  // Wholly behind the eye's plane (every corner clearly so): a ray with
-  // t > 0 has ⟨H − e, f⟩ = t·⟨d, f⟩ > 0 (1. below), so none meets the box.
-  bool behind = true;
-  for (int k = 0; k < 8 && behind; ++k) {
-    const Vec3 q{l.x + ((k & 1) ? radius : -radius), l.y + ((k & 2) ? radius : -radius),
-                 l.z + ((k & 4) ? radius : -radius)};
-    const double err = 1e-14 * (max_abs(q) + max_abs(c.eye));
-    behind = geometry::dot(q - c.eye, c.f) < -4 * err;
-  }
-  if (behind) return {0, 0, 0, 0};
-  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  const double radius = *light.light_end * (1 + 1e-9) + 1e-12 * geometry::max_abs(l);
+  // The box's corners, each with its camera-space depth and the error
+  // bound of the dot products taken from it.
+  struct Corner {
+    Vec3 v;  ///< corner − eye
+    double z, err;
+  };
+  Corner corners[8];
   for (int k = 0; k < 8; ++k) {
     const Vec3 q{l.x + ((k & 1) ? radius : -radius), l.y + ((k & 2) ? radius : -radius),
                  l.z + ((k & 4) ? radius : -radius)};
-    const Vec3 v = q - c.eye;
-    const double magnitude = max_abs(q) + max_abs(c.eye);
-    const double err = 1e-14 * magnitude;
-    const double z = geometry::dot(v, c.f);
+    corners[k].v = q - c.eye;
+    corners[k].z = geometry::dot(corners[k].v, c.f);
+    corners[k].err = 1e-14 * (geometry::max_abs(q) + geometry::max_abs(c.eye));
+  }
+  // Wholly behind the eye's plane (every corner clearly so): a ray with
+  // t > 0 has ⟨H − e, f⟩ = t·⟨d, f⟩ > 0 (1. below), so none meets the box.
+  if (std::all_of(std::begin(corners), std::end(corners),
+                  [](const Corner& q) { return q.z < -4 * q.err; }))
+    return {0, 0, 0, 0};
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (const Corner& corner : corners) {
+    const Vec3& v = corner.v;
+    const double z = corner.z, err = corner.err;
     // Strictly in front, and by far more than its error: otherwise the
     // corner's image is unbounded or meaningless.
     if (!(z > 4 * err + 1e-9 * geometry::length(v))) return whole;

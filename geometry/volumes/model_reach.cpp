@@ -1,3 +1,4 @@
+#include <geometry/exact/coordinate_range.h>
 #include <geometry/volumes/far_ends.h>
 #include <geometry/volumes/model_reach.h>
 
@@ -14,8 +15,6 @@ namespace {
 /// Below this many casting models every light scans them all: a tree's
 /// build costs about what 64 scans do.
 constexpr std::size_t kTreeModels = 64;
-
-double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 /// The cube about a point light holding every point within `reach`,
 /// enlarged by far more than the rounding of its corners: a box a tree

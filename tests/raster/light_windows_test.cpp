@@ -21,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <string>
 
 namespace umbra::raster {
 namespace {
@@ -34,6 +35,15 @@ geometry::Light limited_light(const geometry::Vec3& position, double reach) {
   light.position = position;
   light.light_end = reach;
   return light;
+}
+
+/// data/scenes/`file` rendered at width x height.
+geometry::Scene data_scene(const std::string& file, int width, int height) {
+  geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes" / file);
+  scene.camera.width = width;
+  scene.camera.height = height;
+  return scene;
 }
 
 /// Exactly: does the ray eye + t·d, t > 0, come within `radius` of `l`?
@@ -196,13 +206,8 @@ void expect_same_frames(const geometry::Scene& scene, RenderOptions options,
 /// `method` on data scenes at 160x90 and on the quad cloud (twisted groups,
 /// the eye in shadow, lights with and without reach) at 96x72.
 void expect_same_on_scenes(Method method, std::initializer_list<const char*> files) {
-  for (const char* file : files) {
-    geometry::Scene scene =
-        geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes" / file);
-    scene.camera.width = 160;
-    scene.camera.height = 90;
-    expect_same_frames(scene, {.method = method, .threads = 2}, file);
-  }
+  for (const char* file : files)
+    expect_same_frames(data_scene(file, 160, 90), {.method = method, .threads = 2}, file);
   geometry::Scene cloud = geometry::testing_scenes::quad_cloud();
   cloud.camera.width = 96;
   cloud.camera.height = 72;
@@ -232,10 +237,7 @@ TEST(LightWindows, RayRendersAreTheSameWithAndWithoutThem) {
 TEST(LightWindows, TheOraclesTruthIsTheSameAsAskingEveryPair) {
   // oracle_truth skips the predicates outside a light's window; asked
   // anyway, every one of those pairs must be out of range and no boundary.
-  geometry::Scene scene =
-      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/night_city.json");
-  scene.camera.width = 80;
-  scene.camera.height = 45;
+  geometry::Scene scene = data_scene("night_city.json", 80, 45);
   ValidateOptions options;
   options.threads = 2;
   const OracleTruth truth = oracle_truth(scene, options);
@@ -267,10 +269,7 @@ TEST(LightWindows, ACityAsOneMeshShadowsAsACityOfBuildings) {
   // counts, classes and depths must be those of the city of separate
   // buildings (whose lamps skip whole models), and every pixel must
   // validate.
-  geometry::Scene city =
-      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/night_city.json");
-  city.camera.width = 192;
-  city.camera.height = 108;
+  geometry::Scene city = data_scene("night_city.json", 192, 108);
   geometry::Scene merged = city;
   geometry::Model one;
   one.name = "city";
@@ -317,10 +316,7 @@ TEST(LightWindows, ACityAsOneMeshShadowsAsACityOfBuildings) {
 
 TEST(LightWindows, ManyLampsKeepOnlyThePixelsTheyReach) {
   // night_city.json: 64 street lamps of reach 3.2 over a city seen whole.
-  geometry::Scene scene =
-      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/night_city.json");
-  scene.camera.width = 320;
-  scene.camera.height = 180;
+  geometry::Scene scene = data_scene("night_city.json", 320, 180);
   RenderStats stats;
   const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &stats);
   const std::uint64_t dense = 320ull * 180 * scene.lights.size();
