@@ -19,6 +19,8 @@ geometry::Scene load_verb_scene(const std::filesystem::path& file,
 }
 
 std::string describe_light(const geometry::Light& light) {
+  if (light.type == geometry::LightType::area)
+    return fmt::format("area light of {} vertices", light.vertices.size());
   if (light.type == geometry::LightType::directional)
     return fmt::format("directional toward ({}, {}, {})", light.direction.x, light.direction.y,
                        light.direction.z);

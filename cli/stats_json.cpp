@@ -80,6 +80,20 @@ nlohmann::ordered_json validation_json(const ValidateRun& run,
   j["lights"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < report.lights.size(); ++i) {
     const raster::LightReport& light = report.lights[i];
+    if (light.soft) {
+      // An area light is judged by |V_image - V| (DESIGN.md's 1e-6 rule).
+      j["lights"].push_back({
+          {"light", i},
+          {"kind", "area"},
+          {"compared", light.compared},
+          {"boundary", light.boundary},
+          {"mismatches", light.mismatches},
+          {"max_error", light.max_error},
+          {"mean_error", light.mean_error()},
+          {"tolerance", raster::kVisibilityTolerance},
+      });
+      continue;
+    }
     j["lights"].push_back({
         {"light", i},
         {"compared", light.compared},

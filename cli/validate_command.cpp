@@ -55,6 +55,14 @@ void print_summary(std::FILE* out, const ValidateArgs& args, const std::optional
   fmt::print(out, "pixels checked: {} ({} background)\n", report.pixels_checked, report.background);
   for (std::size_t i = 0; i < report.lights.size(); ++i) {
     const raster::LightReport& l = report.lights[i];
+    if (l.soft) {
+      fmt::print(out,
+                 "light {} (area): {} compared, {} boundary, {} mismatches (|V - V_exact| > {:g}); "
+                 "largest error {:.3g}, mean {:.3g}\n",
+                 i, l.compared, l.boundary, l.mismatches, raster::kVisibilityTolerance, l.max_error,
+                 l.mean_error());
+      continue;
+    }
     fmt::print(out,
                "light {}: {} compared, {} boundary, {} mismatches "
                "({} false lit, {} false shadowed, {} range)\n",

@@ -1,11 +1,12 @@
 # CTest labels (CONTRIBUTING.md): every test is `fast` or `slow`; tests
 # that run an umbra program (CMake-script tests, replays, smoke runs) are
 # also `cli`. `ctest -L fast` is the inner loop (under a minute here);
-# `slow` holds the sweeps, the chart smoke run, the 1,024-lamp city and the
-# determinism runs.
+# `slow` holds the sweeps, the chart smoke run, the 1,024-lamp city, the
+# determinism runs and the area-light scenes (their exact visible fractions
+# take seconds a frame; the gtests prove the same code under sanitizers).
 set(UMBRA_NOT_CLI_TESTS_REGEX "^layout\\.")
 set(UMBRA_SLOW_TESTS_REGEX
-  "^(fuzz\\.real\\.|fuzz\\.check\\.placements|bench\\.chart_smoke|bench\\.city_|determinism\\.|regression\\.|validate\\..*\\.exact$)")
+  "^(fuzz\\.real\\.|fuzz\\.check\\.placements|bench\\.chart_smoke|bench\\.city_|determinism\\.|regression\\.|validate\\..*\\.exact$|validate\\.soft|tiles\\.soft)")
 
 # Labels every test that add_test made in the calling directory.
 function(umbra_label_directory_tests)

@@ -14,8 +14,10 @@ Box models_bounds(const Scene& scene) {
 Box scene_bounds(const Scene& scene) {
   Box box = models_bounds(scene);
   if (scene.has_camera) box.extend(scene.camera.eye);
-  for (const Light& l : scene.lights)
+  for (const Light& l : scene.lights) {
     if (l.type == LightType::point) box.extend(l.position);
+    for (const Vec3& v : l.vertices) box.extend(v);  // an area light's polygon
+  }
   return box;
 }
 

@@ -26,7 +26,10 @@ struct Camera {
   int height = 480;
 };
 
-enum class LightType { point, directional };
+/// point and directional lights cast hard shadows (shadow.<i>); an area
+/// light casts soft ones (visibility.<i>, the exact visible fraction V(P):
+/// DESIGN.md "Area lights", docs/soft-shadows.md).
+enum class LightType { point, directional, area };
 
 /// Bergeron's light: full intensity up to dec_begin, then
 /// ((light_end - d) / (light_end - dec_begin))^decrease, zero from light_end on.
@@ -35,7 +38,14 @@ struct Light {
   LightType type = LightType::point;
   Vec3 position;   ///< point lights: where the light is
   Vec3 direction;  ///< directional lights: the direction light travels (not normalized)
+  /// Area lights: the light's polygon, at least three vertices. Its surface
+  /// follows the rule for model polygons (polygon_surface.h): planar, its
+  /// even-odd interior; non-planar, its fan triangles. Never empty for an
+  /// area light, always empty for the others.
+  std::vector<Vec3> vertices;
   Rgb intensity{1, 1, 1};
+  /// Range (point lights only: an area light has none, a scene giving one is
+  /// refused).
   double dec_begin = 0;
   std::optional<double> light_end;
   int decrease = 1;

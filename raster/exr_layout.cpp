@@ -2,14 +2,28 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+
 namespace umbra::raster::exr_layout {
 
-std::vector<std::string> channel_names(std::size_t lights) {
+std::vector<std::string> channel_names(std::size_t lights, std::span<const std::uint8_t> soft) {
   std::vector<std::string> names = {"R", "G", "B"};
-  for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("shadow.{}", i));
+  for (std::size_t i = 0; i < lights; ++i)
+    names.push_back((i < soft.size() && soft[i] ? "visibility." : "shadow.") + std::to_string(i));
   for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("count.{}", i));
   names.push_back("depth");
   return names;
+}
+
+long light_channel_index(const std::string& name, std::string_view prefix) {
+  if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return -1;
+  const char* first = name.data() + prefix.size();
+  const char* last = name.data() + name.size();
+  long index = -1;
+  const auto [end, ec] = std::from_chars(first, last, index);
+  if (ec != std::errc() || end != last || index < 0) return -1;
+  if (std::to_string(index) != std::string(first, last)) return -1;  // "shadow.01"
+  return index;
 }
 
 const char* content_format(std::string_view bytes) {

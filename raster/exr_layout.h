@@ -3,6 +3,8 @@
 // on: the channel layout of umbra's EXR, the tile attributes, and the
 // checks a hostile header needs. Internal to raster/.
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,8 +15,14 @@ inline constexpr const char* kTileAttribute = "umbra:tile";
 inline constexpr const char* kJobAttribute = "umbra:job";
 
 /// The EXR channel names of a frame with `lights` lights, in umbra's order:
-/// R, G, B, shadow.<i>..., count.<i>..., depth.
-std::vector<std::string> channel_names(std::size_t lights);
+/// R, G, B, one value channel a light (shadow.<i>, or visibility.<i> where
+/// soft[i] is 1: an area light; `soft` may be shorter, the rest hard),
+/// count.<i>..., depth.
+std::vector<std::string> channel_names(std::size_t lights, std::span<const std::uint8_t> soft = {});
+
+/// The light index of a channel named exactly `prefix<i>` (i written
+/// without leading zeros), or -1.
+long light_channel_index(const std::string& name, std::string_view prefix);
 
 /// The last pixel coordinate of a window from `origin` of `size` pixels, in
 /// 64 bits: a hostile header's origin near INT_MAX would overflow int.

@@ -54,6 +54,12 @@ struct Frame {
   /// Distance from the eye to the visible point along the sample ray
   /// (t·|d|); kDepthBackground where the ray hits nothing.
   util::PixelPlane depth;
+  /// 1 for each area light (set by raster::render from the scene, by
+  /// umbra merge from the channel names): its shadow_values hold the
+  /// visible fraction V(P) in [0, 1], written as `visibility.<i>`, and its
+  /// count.<i> is 0 (no depth count decides it). Empty: no area light.
+  std::vector<std::uint8_t> soft;
+  bool is_soft(std::size_t light) const { return light < soft.size() && soft[light] != 0; }
   /// 1 where the sample ray hits a surface. Outside a light's window a
   /// sample is out of range where this is 1 and lit background where it is
   /// 0 (a depth may round to infinity as a float and still be a hit).

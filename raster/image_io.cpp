@@ -30,6 +30,7 @@ using exr_layout::content_format;
 using exr_layout::kJobAttribute;
 using exr_layout::kTileAttribute;
 using exr_layout::last_pixel;
+using exr_layout::light_channel_index;
 
 namespace {
 
@@ -112,7 +113,7 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
   header.full_height = frame.height;
   // Our order; OpenEXR itself stores channels sorted by name, which is why
   // read_shadow_channels looks them up by name.
-  header.channels = channel_names(lights);
+  header.channels = channel_names(lights, frame.soft);
   // No time stamp (DateTime empty): the same render gives the same bytes
   // (OpenEXR writers otherwise record the current time).
   header.attributes = {{"oiio:ColorSpace", "Linear"}, {"compression", "zip"}, {"DateTime", ""}};
@@ -185,20 +186,6 @@ void check_frame(const Frame& frame) {
         frame.windows.size()));
 }
 
-/// The light index of a channel named exactly `shadow.<i>` (i written without
-/// leading zeros), or -1.
-long shadow_index(const std::string& name) {
-  constexpr std::string_view prefix = "shadow.";
-  if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return -1;
-  const char* first = name.data() + prefix.size();
-  const char* last = name.data() + name.size();
-  long index = -1;
-  const auto [end, ec] = std::from_chars(first, last, index);
-  if (ec != std::errc() || end != last || index < 0) return -1;
-  if (std::to_string(index) != std::string(first, last)) return -1;  // "shadow.01"
-  return index;
-}
-
 }  // namespace
 
 void write_frame(const Frame& frame, const fs::path& path) {
@@ -223,9 +210,12 @@ void write_frame_tile(const Frame& frame, RowRange rows, const TileLabel& tile,
 }
 
 ShadowChannels shadow_channels(const Frame& frame) {
-  ShadowChannels out{frame.width, frame.height, {}};
+  ShadowChannels out{frame.width, frame.height, {}, {}};
   out.shadow.reserve(frame.lights());
-  for (std::size_t l = 0; l < frame.lights(); ++l) out.shadow.push_back(frame.shadow_plane(l));
+  for (std::size_t l = 0; l < frame.lights(); ++l) {
+    out.shadow.push_back(frame.shadow_plane(l));
+    out.soft.push_back(frame.is_soft(l) ? 1 : 0);
+  }
   return out;
 }
 
@@ -253,18 +243,29 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
 
   // Channel position by light index; std::map keeps indices sorted whatever
   // order the file lists them in (EXR sorts "shadow.10" before "shadow.2").
+  // A light's value channel is shadow.<i> (point, directional) or
+  // visibility.<i> (area); never both.
   std::map<long, int> by_light;
+  std::map<long, std::uint8_t> soft_by_light;
   for (int c = 0; c < static_cast<int>(spec.channels.size()); ++c) {
-    const long index = shadow_index(spec.channels[c]);
-    if (index >= 0) by_light.emplace(index, c);
+    for (const std::uint8_t soft : {std::uint8_t{0}, std::uint8_t{1}}) {
+      const long index = light_channel_index(spec.channels[c], soft ? "visibility." : "shadow.");
+      if (index < 0) continue;
+      if (!by_light.emplace(index, c).second)
+        throw util::InputError(where, fmt::format("has both shadow.{0} and visibility.{0}", index));
+      soft_by_light[index] = soft;
+    }
   }
   if (!by_light.contains(0))
     throw util::InputError(where,
-                           "has no shadow.0 channel; render it with -o NAME.exr to get the AOVs");
+                           "has no shadow.0 or visibility.0 channel; render it with -o NAME.exr "
+                           "to get the AOVs");
   long expected = 0;
   for (const auto& [index, channel] : by_light) {
     if (index != expected)
-      throw util::InputError(where, fmt::format("has shadow.{} but no shadow.{}", index, expected));
+      throw util::InputError(where, fmt::format("has a channel for light {} but none for light {} "
+                                                "(shadow.{} or visibility.{})",
+                                                index, expected, expected, expected));
     ++expected;
   }
 
@@ -295,6 +296,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   result.width = spec.width;
   result.height = spec.height;
   result.shadow.assign(by_light.size(), util::PixelPlane(n));
+  for (const auto& [index, soft] : soft_by_light) result.soft.push_back(soft);
   // The shadow channels a block of rows at a time, so that other channels
   // (or however many) cost no memory. EXR sorts channels by name, so in
   // umbra's files they lie together and one read takes them all; a file

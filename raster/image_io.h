@@ -55,7 +55,10 @@ inline constexpr std::uint64_t kMaxImagePixels = 16384ull * 16384ull;
 struct ShadowChannels {
   int width = 0;
   int height = 0;
-  std::vector<util::PixelPlane> shadow;  ///< shadow.0, shadow.1, ... in order
+  /// Each light's value channel in light order: shadow.<i>, or for an area
+  /// light (soft[i] = 1) visibility.<i>.
+  std::vector<util::PixelPlane> shadow;
+  std::vector<std::uint8_t> soft;
 };
 ShadowChannels read_shadow_channels(const std::filesystem::path& path);
 

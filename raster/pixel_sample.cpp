@@ -1,3 +1,4 @@
+#include <geometry/oracle/visible_fraction.h>
 #include <raster/pixel_sample.h>
 #include <raster/shading.h>
 
@@ -20,8 +21,18 @@ float shadow_value(ShadowClass c) {
 }
 }  // namespace
 
-PixelSample::PixelSample(std::size_t every) : lights(every), classes(every), counts(every) {
+PixelSample::PixelSample(std::size_t every)
+    : lights(every), classes(every), counts(every), visibility(every, 1.0f) {
   for (std::size_t l = 0; l < every; ++l) lights[l] = static_cast<std::uint32_t>(l);
+}
+
+void decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
+                       const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
+                       PixelSample& sample) {
+  const float v = static_cast<float>(geometry::visible_fraction(index, ray, hit, light).value);
+  sample.visibility[k] = v;
+  sample.classes[k] = v > 0 ? ShadowClass::lit : ShadowClass::shadowed;
+  sample.counts[k] = 0;
 }
 
 void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
@@ -34,18 +45,33 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
   // every pixel through here, and a vector made per call was a heap
   // allocation per pixel.
   thread_local std::vector<std::uint32_t> lit;
+  thread_local std::vector<float> fraction;
   lit.clear();
+  fraction.clear();
   const auto w = static_cast<std::size_t>(frame.width);
   const int i = static_cast<int>(pixel % w), j = static_cast<int>(pixel / w);
   for (std::size_t k = 0; k < sample.lights.size(); ++k) {
     const std::uint32_t l = sample.lights[k];
-    if (sample.classes[k] == ShadowClass::lit) lit.push_back(l);
     const std::size_t slot = frame.windows.inside(l, i, j);  // listed: in its window
+    if (frame.is_soft(l)) {
+      const float v = sample.visibility[k];
+      if (v > 0) {
+        lit.push_back(l);
+        fraction.push_back(v);
+      }
+      frame.shadow_values[slot] = v;
+      frame.count_values[slot] = 0.0f;
+      continue;
+    }
+    if (sample.classes[k] == ShadowClass::lit) {
+      lit.push_back(l);
+      fraction.push_back(1.0f);
+    }
     frame.shadow_values[slot] = shadow_value(sample.classes[k]);
     frame.count_values[slot] = static_cast<float>(sample.counts[k]);
   }
   const geometry::Rgb c =
-      shade(scene, sample.look, point, normal, geometry::normalize(-ray.direction), lit);
+      shade(scene, sample.look, point, normal, geometry::normalize(-ray.direction), lit, fraction);
   frame.beauty[3 * pixel + 0] = static_cast<float>(c.r);
   frame.beauty[3 * pixel + 1] = static_cast<float>(c.g);
   frame.beauty[3 * pixel + 2] = static_cast<float>(c.b);

@@ -28,7 +28,18 @@ struct PixelSample {
   std::vector<std::uint32_t> lights;
   std::vector<geometry::ShadowClass> classes;
   std::vector<int> counts;  ///< the final depth count
+  /// For an area light: its visible fraction V(P) in [0, 1] (classes[k]
+  /// lit where V > 0, shadowed where V = 0; counts[k] 0). Unused for the
+  /// other lights.
+  std::vector<float> visibility;
 };
+
+/// Area light `light`, entry k of the sample's list, at the sample of `ray`
+/// whose first hit is `hit`: its exact visible fraction
+/// (geometry::visible_fraction), lit where it is above 0, count 0.
+void decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
+                       const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
+                       PixelSample& sample);
 
 /// Writes `sample` to pixel `pixel` of `frame`: beauty (ambient plus the lit
 /// lights, the normal turned to face the eye), shadow.<i>, count.<i>, depth.

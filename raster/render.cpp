@@ -5,6 +5,9 @@
 #include <raster/methods/render_methods.h>
 #include <raster/render.h>
 #include <raster/supersample.h>
+#include <util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -60,6 +63,14 @@ Frame render_linear(const geometry::Scene& scene, const RenderOptions& options,
              (options.rows ? options.rows->size() : scene.camera.height);
   if (!options.shadows && options.method != Method::volume)
     throw std::invalid_argument("render: shadows can only be turned off for Method::volume");
+  if (options.method == Method::map || options.method == Method::ray)
+    for (std::size_t l = 0; l < scene.lights.size(); ++l)
+      if (scene.lights[l].type == geometry::LightType::area)
+        throw util::InputError(
+            scene.source.empty() ? "render" : scene.source.string(),
+            fmt::format("light {} is an area light, which --method {} does not render yet; use "
+                        "--method volume or exact",
+                        l, options.method == Method::map ? "map" : "ray"));
   Frame frame;
   switch (options.method) {
     case Method::exact:

@@ -19,24 +19,33 @@ double light_falloff(const Light& light, double distance) {
   return std::pow((end - distance) / (end - light.dec_begin), light.decrease);
 }
 
+Vec3 area_light_centre(const Light& light) {
+  Vec3 sum{0, 0, 0};
+  for (const Vec3& v : light.vertices) sum = sum + v;
+  return sum * (1.0 / static_cast<double>(light.vertices.size()));
+}
+
 Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
-          const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit) {
+          const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit,
+          std::span<const float> visible) {
   const Rgb& color = look.color;
   const bool glossy = look.specular.r > 0 || look.specular.g > 0 || look.specular.b > 0;
   Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
-  for (const std::uint32_t i : lit) {
-    const Light& light = scene.lights[i];
+  for (std::size_t k = 0; k < lit.size(); ++k) {
+    const Light& light = scene.lights[lit[k]];
     Vec3 to_light;
-    double factor = 1.0;
+    double factor = visible.empty() ? 1.0 : visible[k];
     if (light.type == LightType::point) {
       to_light = light.position - point;
-      factor = light_falloff(light, length(to_light));
+      factor *= light_falloff(light, length(to_light));
+    } else if (light.type == LightType::area) {
+      to_light = area_light_centre(light) - point;
     } else {
       to_light = -light.direction;
     }
     const Vec3 l = normalize(to_light);
     const double cosine = dot(normal, l);
-    if (cosine <= 0 || factor <= 0) continue;
+    if (!(cosine > 0) || factor <= 0) continue;  // NaN: the point is the light itself
     double highlight = 0;
     if (glossy) {
       const Vec3 h = normalize(l + to_eye);

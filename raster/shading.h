@@ -28,9 +28,19 @@ struct SurfaceLook {
 /// (count zero and in range): a shadowed light adds nothing, highlight
 /// included. Listing only those (not a flag per scene light) keeps a pixel
 /// that 3 of 1,024 lamps reach at 3 steps.
+///
+/// An area light shines as a point light of the same intensity at its
+/// vertices' centroid, unlimited, times `visible[k]`, its visible fraction
+/// V(P) (docs/soft-shadows.md: V times the unoccluded light of the centre).
+/// `visible` is empty (every listed light wholly visible) or lists one
+/// factor per entry of `lit`.
 geometry::Rgb shade(const geometry::Scene& scene, const SurfaceLook& look,
                     const geometry::Vec3& point, const geometry::Vec3& normal,
-                    const geometry::Vec3& to_eye, std::span<const std::uint32_t> lit);
+                    const geometry::Vec3& to_eye, std::span<const std::uint32_t> lit,
+                    std::span<const float> visible = {});
+
+/// Where an area light shines from for shading: its vertices' centroid.
+geometry::Vec3 area_light_centre(const geometry::Light& light);
 
 /// The sRGB transfer curve, for the PNG's 8 bits (input clamped to [0, 1]).
 float encode_srgb(float linear);

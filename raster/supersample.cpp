@@ -35,6 +35,7 @@ Frame downsample(const Frame& fine, int factor) {
   for (std::size_t l = 0; l < fine.lights(); ++l)
     rects.push_back(coarse_window(fine.windows.rect(l), factor, w, h));
   Frame out(w, h, LightWindows(w, h, std::move(rects)));
+  out.soft = fine.soft;  // an area light's values stay visible fractions
   const int centre = factor / 2;
   const float weight = 1.0f / static_cast<float>(factor * factor);
   for (int j = 0; j < h; ++j) {

@@ -38,7 +38,8 @@ struct TilePart {
   int width = 0, height = 0;  ///< the display window: the whole frame
   RowRange rows;
   std::size_t lights = 0;
-  std::vector<int> destination;  ///< per file channel: its place in channel_names
+  std::vector<std::uint8_t> soft;  ///< per light: 1 for an area light (visibility.<i>)
+  std::vector<int> destination;    ///< per file channel: its place in channel_names
 };
 
 TilePart open_tile(const fs::path& path) {
@@ -90,7 +91,14 @@ TilePart open_tile(const fs::path& path) {
                                         last_pixel(spec.y, spec.height) + 1, part.rows.begin,
                                         part.rows.end, part.height));
   part.lights = static_cast<std::size_t>(nchannels - 4) / 2;
-  const std::vector<std::string> names = channel_names(part.lights);
+  // An area light's value channel is visibility.<i> (frame.h).
+  part.soft.assign(part.lights, 0);
+  for (int c = 0; c < nchannels; ++c) {
+    const long l = exr_layout::light_channel_index(spec.channels[c], "visibility.");
+    if (l >= 0 && static_cast<std::size_t>(l) < part.lights)
+      part.soft[static_cast<std::size_t>(l)] = 1;
+  }
+  const std::vector<std::string> names = channel_names(part.lights, part.soft);
   if (static_cast<std::size_t>(nchannels) != names.size())
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (its channels)");
   for (int c = 0; c < nchannels; ++c) {
@@ -127,6 +135,7 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
     if (part.label.count != first.label.count) differs("the number of tiles");
     if (part.width != first.width || part.height != first.height) differs("the image size");
     if (part.lights != first.lights) differs("the number of lights");
+    if (part.soft != first.soft) differs("which lights are area lights");
     if (by_index[part.label.index] != nullptr)
       throw InputError(part.path.string(),
                        fmt::format("tile {}/{} is also {}", part.label.index, part.label.count,
@@ -150,6 +159,7 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
                                  static_cast<double>(bytes) / (1ull << 30),
                                  static_cast<double>(max_bytes) / (1ull << 30)));
   Frame frame(first.width, first.height, first.lights);
+  frame.soft = first.soft;
   const std::size_t width = static_cast<std::size_t>(first.width);
   const std::size_t lights = first.lights;
   for (TilePart& part : parts) {

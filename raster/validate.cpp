@@ -1,14 +1,19 @@
 // umbra validate: every checked pixel's shadow.<i> against the oracle.
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/visible_fraction.h>
 #include <raster/frame.h>
 #include <raster/light_windows.h>
 #include <raster/validate.h>
 #include <util/input_error.h>
 #include <util/parallel_for.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <span>
 
 namespace umbra::raster {
 
@@ -67,8 +72,16 @@ std::uint64_t ValidationReport::total_mismatches() const {
 
 namespace {
 
+/// 1 for each area light of the scene.
+std::vector<std::uint8_t> soft_of(const geometry::Scene& scene) {
+  std::vector<std::uint8_t> soft;
+  for (const geometry::Light& light : scene.lights)
+    soft.push_back(light.type == geometry::LightType::area ? 1 : 0);
+  return soft;
+}
+
 void check_fits(const std::string& where, int width, int height, std::size_t lights,
-                const ShadowChannels& image) {
+                std::span<const std::uint8_t> soft, const ShadowChannels& image) {
   if (image.width != width || image.height != height) {
     throw util::InputError(where, "the image is " + std::to_string(image.width) + "x" +
                                       std::to_string(image.height) +
@@ -79,6 +92,16 @@ void check_fits(const std::string& where, int width, int height, std::size_t lig
     throw util::InputError(where, "the image has " + std::to_string(image.shadow.size()) +
                                       " shadow channels but the scene has " +
                                       std::to_string(lights) + " lights");
+  }
+  for (std::size_t l = 0; l < lights && l < soft.size(); ++l) {
+    const bool image_soft = l < image.soft.size() && image.soft[l];
+    if (image_soft != (soft[l] != 0))
+      throw util::InputError(
+          where, fmt::format("the image's light {} is {}.{} but the scene's light {} is {} light "
+                             "(its channel is {}.{})",
+                             l, image_soft ? "visibility" : "shadow", l, l,
+                             soft[l] ? "an area" : "a point or directional",
+                             soft[l] ? "visibility" : "shadow", l));
   }
   const std::size_t total = static_cast<std::size_t>(width) * height;
   for (const auto& channel : image.shadow) {
@@ -99,6 +122,8 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
   truth.hit.assign(truth.pixels.size(), 0);
   truth.cls.assign(truth.pixels.size() * truth.lights, ShadowClass::lit);
   truth.boundary.assign(truth.pixels.size() * truth.lights, 0);
+  truth.visibility.assign(truth.pixels.size() * truth.lights, 1.0);
+  truth.soft = soft_of(scene);
 
   const geometry::SceneIndex index(scene);
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
@@ -127,6 +152,13 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
           truth.cls[k * truth.lights + l] = ShadowClass::out_of_range;
           continue;
         }
+        if (truth.soft[l]) {
+          const geometry::VisibleFraction v = geometry::visible_fraction(index, ray, *hit, l);
+          truth.visibility[k * truth.lights + l] = v.value;
+          truth.cls[k * truth.lights + l] = v.value > 0 ? ShadowClass::lit : ShadowClass::shadowed;
+          truth.boundary[k * truth.lights + l] = v.boundary ? 1 : 0;
+          continue;
+        }
         const geometry::ShadowAnswer answer = geometry::classify_sample(index, ray, *hit, l);
         truth.cls[k * truth.lights + l] = answer.cls;
         truth.boundary[k * truth.lights + l] = answer.boundary ? 1 : 0;
@@ -139,11 +171,13 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
 
 ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& image,
                               const std::string& where) {
-  check_fits(where, truth.width, truth.height, truth.lights, image);
+  check_fits(where, truth.width, truth.height, truth.lights, truth.soft, image);
   ValidationReport report;
   report.width = image.width;
   report.height = image.height;
   report.lights.resize(truth.lights);
+  for (std::size_t l = 0; l < truth.lights; ++l)
+    report.lights[l].soft = l < truth.soft.size() && truth.soft[l];
   report.mask.assign(static_cast<std::size_t>(image.width) * image.height, -1);
   report.pixels_checked = truth.pixels.size();
   for (std::size_t k = 0; k < truth.pixels.size(); ++k) {
@@ -160,6 +194,18 @@ ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& im
       if (truth.boundary[k * truth.lights + l]) {
         ++r.boundary;
         mark = std::max<std::int8_t>(mark, 1);
+        continue;
+      }
+      if (r.soft) {
+        const double error = std::fabs(static_cast<double>(image.shadow[l][p]) -
+                                       truth.visibility[k * truth.lights + l]);
+        const bool bad = !(error <= kVisibilityTolerance);  // NaN fails
+        r.max_error = std::max(r.max_error, bad && !(error == error) ? 1.0 : error);
+        r.sum_error += error == error ? error : 1.0;
+        if (bad) {
+          ++r.mismatches;
+          mark = 2;
+        }
         continue;
       }
       const Mistake m = judge(truth.cls[k * truth.lights + l], image.shadow[l][p]);
@@ -183,7 +229,8 @@ ValidationReport validate_render(const geometry::Scene& scene, const ShadowChann
                                  const ValidateOptions& options) {
   const std::string where = scene.source.empty() ? "validate" : scene.source.string();
   // A misfit image is refused before the oracle's long run.
-  check_fits(where, scene.camera.width, scene.camera.height, scene.lights.size(), image);
+  check_fits(where, scene.camera.width, scene.camera.height, scene.lights.size(), soft_of(scene),
+             image);
   return score_render(oracle_truth(scene, options), image, where);
 }
 

@@ -27,7 +27,20 @@ struct LightReport {
   std::uint64_t false_lit = 0;
   std::uint64_t false_shadowed = 0;
   std::uint64_t wrong_range = 0;  ///< in range vs out of range disagree
+  /// An area light (visibility.<i>): mismatches are the scored samples
+  /// whose |V_image − V| exceeds kVisibilityTolerance (or is NaN), and
+  /// these are the largest and the sum of |V_image − V| over them.
+  bool soft = false;
+  double max_error = 0;
+  double sum_error = 0;
+  /// Scored samples: compared minus boundary.
+  std::uint64_t scored() const { return compared - boundary; }
+  double mean_error() const { return scored() ? sum_error / static_cast<double>(scored()) : 0.0; }
 };
+
+/// DESIGN.md's rule for visible fractions: a sample fails when its value
+/// is further than this from the exact V(P).
+inline constexpr double kVisibilityTolerance = 1e-6;
 
 struct ValidationReport {
   int width = 0, height = 0;
@@ -60,6 +73,10 @@ struct OracleTruth {
   /// the sample lies on a boundary (then not scored).
   std::vector<geometry::ShadowClass> cls;
   std::vector<std::uint8_t> boundary;
+  /// Per light: 1 for an area light, whose truth is visibility[k * lights
+  /// + l], the exact V(P) (cls is then lit where V > 0).
+  std::vector<std::uint8_t> soft;
+  std::vector<double> visibility;
 };
 
 OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& options);

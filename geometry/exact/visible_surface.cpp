@@ -148,6 +148,7 @@ std::optional<SurfaceHit> first_hit(const SceneIndex& index, const SampleRay& ra
       if (compare_projection_to_hit(ray.origin, ray.direction, index.vertex(p, k), h.a, h.b, h.c) !=
           Sign::positive) {
         hit.boundary = true;
+        hit.grazes = true;
         break;
       }
     }

@@ -14,6 +14,10 @@ struct SurfaceHit {
   /// polygon edge or vertex, on a crease of a non-planar polygon, or grazes
   /// a polygon lying in a plane through the ray in front of H.
   bool boundary = false;
+  /// Of those, the grazing kind: a polygon lying in a plane through the ray
+  /// may be met in front of H (the visible surface itself may change,
+  /// whatever H's neighbourhood looks like).
+  bool grazes = false;
 };
 
 /// The hit with the smallest t > 0 of the ray on the surfaces of all polygons

@@ -223,6 +223,11 @@ std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOpti
     for (std::uint32_t l = 0; l < scene.lights.size(); ++l) out.push_back(l);
   std::sort(out.begin(), out.end());
   for (std::uint32_t l : out) {
+    if (scene.lights[l].type == LightType::area)
+      throw std::invalid_argument(fmt::format(
+          "footprint: light {} is an area light, whose shadow has penumbrae; footprints are "
+          "built for point and directional lights only (choose them with --lights)",
+          l));
     if (scene.lights[l].light_end && !options.ignore_light_end)
       throw std::invalid_argument(fmt::format(
           "footprint: light {} has light_end, whose sphere cuts receivers along circles, not "

@@ -333,6 +333,10 @@ FootprintCheckReport check_footprint(const Scene& input, const FootprintFile& fi
       bad(fmt::format("light {} (the scene has {})", face.light, input.lights.size()));
       continue;
     }
+    if (input.lights[static_cast<std::size_t>(face.light)].type == LightType::area) {
+      bad(fmt::format("light {} is an area light, which has no hard footprint", face.light));
+      continue;
+    }
     if (face.model < 0 || static_cast<std::uint64_t>(face.model) >= input.models.size()) {
       bad(fmt::format("model {} (the scene has {})", face.model, input.models.size()));
       continue;

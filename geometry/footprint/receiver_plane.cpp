@@ -1,6 +1,5 @@
+#include <geometry/exact/rational_rounding.h>
 #include <geometry/footprint/receiver_plane.h>
-
-#include <mpfr.h>
 
 #include <optional>
 #include <stdexcept>
@@ -203,23 +202,8 @@ std::optional<FT> first_hit(const InwardRay& ray, const Point2& a, const Point2&
   return std::nullopt;
 }
 
-double nearest_double(const FT& x) {
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, rational_of(CGAL::exact(x)), MPFR_RNDN);
-  const double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
-}
+double nearest_double(const FT& x) { return geometry::nearest_double(rational_of(CGAL::exact(x))); }
 
-double nearest_sqrt(const FT& x) {
-  mpfr_t r;
-  mpfr_init2(r, 256);
-  mpfr_set_q(r, rational_of(CGAL::exact(x)), MPFR_RNDN);
-  mpfr_sqrt(r, r, MPFR_RNDN);
-  const double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
-}
+double nearest_sqrt(const FT& x) { return geometry::nearest_sqrt(rational_of(CGAL::exact(x))); }
 
 }  // namespace umbra::geometry::detail

@@ -11,6 +11,7 @@
 #include <geometry/io/mesh_io.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/io/transform.h>
+#include <geometry/oracle/visible_fraction.h>
 #include <geometry/sample_ray.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
@@ -74,6 +75,30 @@ Camera read_camera(const Fields& in, Element v) {
   return camera;
 }
 
+/// Refuses the range fields of a light that has no range (`what` names it).
+void refuse_range(const Fields& in, Element v, const std::string& path, const std::string& what) {
+  for (const char* key : {"dec_begin", "light_end", "decrease"})
+    if (Fields::find(v, key))
+      in.fail(child(path, key), std::string("'") + key + "' means nothing for " + what);
+}
+
+/// An area light's polygon: at least three points whose surface (the
+/// rule for model polygons, polygon_surface.h) has an area.
+std::vector<Vec3> read_area_light_vertices(const Fields& in, Element v, const std::string& path) {
+  const Array list = in.array(v, path);
+  std::vector<Vec3> vertices;
+  for (const Element vertex : list)
+    vertices.push_back(in.point(vertex, item(path, vertices.size())));
+  if (vertices.size() < 3)
+    in.fail(path,
+            "an area light needs at least 3 vertices, got " + std::to_string(vertices.size()));
+  if (!area_light_has_area(vertices))
+    in.fail(path,
+            "the area light's surface has zero area (collinear vertices, or an even-odd "
+            "interior that cancels out)");
+  return vertices;
+}
+
 Light read_light(const Fields& in, Element v, const std::string& path) {
   in.expect_object(v, path);
   Light light;
@@ -84,17 +109,18 @@ Light read_light(const Fields& in, Element v, const std::string& path) {
     light.position = in.point(in.required(v, "position", path), child(path, "position"));
   } else if (type == "directional") {
     light.type = LightType::directional;
-    for (const char* key : {"dec_begin", "light_end", "decrease"}) {
-      if (Fields::find(v, key)) {
-        in.fail(child(path, key),
-                std::string("'") + key + "' means nothing for a directional light");
-      }
-    }
+    refuse_range(in, v, path, "a directional light");
     in.check_keys(v, path, {"type", "direction", "intensity"});
     light.direction = in.direction(in.required(v, "direction", path), child(path, "direction"));
+  } else if (type == "area") {
+    light.type = LightType::area;
+    refuse_range(in, v, path, "an area light (it has no range)");
+    in.check_keys(v, path, {"type", "vertices", "intensity"});
+    light.vertices =
+        read_area_light_vertices(in, in.required(v, "vertices", path), child(path, "vertices"));
   } else {
     in.fail(child(path, "type"),
-            "unknown light type '" + type + "'; expected point or directional");
+            "unknown light type '" + type + "'; expected point, directional or area");
   }
   if (const std::optional<Element> intensity = Fields::find(v, "intensity"))
     light.intensity = in.rgb(*intensity, child(path, "intensity"));

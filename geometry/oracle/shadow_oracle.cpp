@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace umbra::geometry {
 HPoint light_point(const Light& light) {
+  if (light.type == LightType::area)
+    throw std::logic_error("light_point: an area light is no point (visible_fraction.h)");
   return light.type == LightType::point ? HPoint::point(light.position)
                                         : HPoint::at_infinity(-light.direction);
 }

@@ -295,6 +295,14 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = share.scene;
   const Light& light = scene.lights[li];
+  if (light.type == LightType::area) {
+    // An area light has no hard shadow volume: its soft shadow is a
+    // visible fraction (geometry/oracle/visible_fraction.h).
+    LightVolume none;
+    none.stats.light = li;
+    none.extrusion.assign(scene.models.size(), 0.0);
+    return none;
+  }
   const HPoint lp = light_point(light);
   const VolumeReach reach = volume_reach(scene, share.bounds, light);
   LightVolume out;

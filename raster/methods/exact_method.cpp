@@ -1,5 +1,6 @@
 // Method::exact: the ground truth, one oracle query per pixel and light.
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/visible_fraction.h>
 #include <raster/methods/render_methods.h>
 #include <raster/pixel_sample.h>
 #include <raster/scanline/surface_table.h>
@@ -16,6 +17,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
   Frame frame(camera.width, camera.height, lights, options.threads);
+  frame.soft = soft_lights(scene);
   const auto start = std::chrono::steady_clock::now();
   util::Progress progress(options.progress);
   progress.phase("exact", static_cast<std::uint64_t>(rows.size()));
@@ -32,6 +34,10 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
       }
       set_surface(index, ray, *hit, sample);
       for (std::uint32_t l = 0; l < lights; ++l) {
+        if (frame.is_soft(l)) {
+          decide_area_light(index, ray, *hit, l, l, sample);
+          continue;
+        }
         sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;
         sample.counts[l] = sample.classes[l] == geometry::ShadowClass::shadowed ? 1 : 0;
       }

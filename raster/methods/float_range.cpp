@@ -27,6 +27,11 @@ void check_float_range(const geometry::Scene& scene, std::string_view method) {
     if (light.type == geometry::LightType::point) {
       if (geometry::max_abs(light.position) > kMaxFloatCoordinate)
         refuse(fmt::format("lights[{}].position", i), geometry::max_abs(light.position));
+    } else if (light.type == geometry::LightType::area) {
+      double largest = 0;
+      for (const geometry::Vec3& v : light.vertices)
+        largest = std::max(largest, geometry::max_abs(v));
+      if (largest > kMaxFloatCoordinate) refuse(fmt::format("lights[{}].vertices", i), largest);
     } else {
       const double m = geometry::max_abs(light.direction);
       if (m > kMaxFloatCoordinate) refuse(fmt::format("lights[{}].direction", i), m);

@@ -8,12 +8,22 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace umbra::raster {
 
 /// The rows `options` asks for (a tile), or every row of the image.
 inline RowRange rows_to_render(const RenderOptions& options, int height) {
   return options.rows ? *options.rows : RowRange{0, height};
+}
+
+/// Frame::soft for `scene`: 1 for each area light. Every method sets it on
+/// its frame before storing a sample (store_sample reads it).
+inline std::vector<std::uint8_t> soft_lights(const geometry::Scene& scene) {
+  std::vector<std::uint8_t> soft;
+  for (const geometry::Light& light : scene.lights)
+    soft.push_back(light.type == geometry::LightType::area ? 1 : 0);
+  return soft;
 }
 
 /// Calls row(j) for every row j of `rows`, one row at a time from up to
@@ -46,7 +56,8 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
                  RenderStats& stats);
 
 /// Ray-cast shadows with Embree: a primary ray per pixel and one occlusion
-/// ray per visible sample and light, all in single precision.
+/// ray per visible sample and light (RayOptions::area_samples stratified
+/// ones for an area light: V = unoccluded / N), all in single precision.
 Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options,
                  RenderStats& stats);
 

@@ -160,6 +160,7 @@ Frame render_volume(const geometry::SceneIndex& index,
   start = util::Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
   Frame frame(camera.width, camera.height, windows, options.threads);
+  frame.soft = soft_lights(scene);
   std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
   // Light l's count at a visible point, decided exactly on the ideal
   // volumes; where even that meets a degenerate configuration (the eye
@@ -196,6 +197,7 @@ Frame render_volume(const geometry::SceneIndex& index,
       sample.lights.assign(here.begin(), here.end());
       sample.classes.resize(here.size());
       sample.counts.resize(here.size());
+      sample.visibility.resize(here.size());
       for (const std::uint32_t l : here) row_slot.push_back(windows.inside(l, 0, j));
     } else {
       sweep.emplace(windows, j);
@@ -208,6 +210,7 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.lights.assign(here.begin(), here.end());
         sample.classes.resize(here.size());
         sample.counts.resize(here.size());
+        sample.visibility.resize(here.size());
       }
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       const std::uint8_t doubt = scan.uncertain[pixel];
@@ -224,6 +227,12 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.look = entry.look;
         for (std::size_t k = 0; k < sample.lights.size(); ++k) {
           const std::uint32_t l = sample.lights[k];
+          if (frame.is_soft(l)) {
+            // Area lights: the exact visible fraction for now; the
+            // penumbra-only fast path is docs/soft-shadows.md's next step.
+            decide_area_light(index, ray, entry.hit, k, l, sample);
+            continue;
+          }
           if (eye.degenerate[l]) {
             // No count at the eye for this light: the oracle decides its
             // samples, the scanline's answer stands for every other light.
@@ -265,6 +274,10 @@ Frame render_volume(const geometry::SceneIndex& index,
       const geometry::HitTriangle tri = set_surface(index, ray, *hit, sample);
       for (std::size_t k = 0; k < sample.lights.size(); ++k) {
         const std::uint32_t l = sample.lights[k];
+        if (frame.is_soft(l)) {
+          decide_area_light(index, ray, *hit, k, l, sample);
+          continue;
+        }
         if (out_of_range(scene.lights[l], ray, tri)) {
           sample.classes[k] = ShadowClass::out_of_range;
           sample.counts[k] = 0;

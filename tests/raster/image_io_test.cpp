@@ -251,7 +251,7 @@ TEST_F(ImageIoTest, AGapInTheShadowChannelsThrows) {
     read_shadow_channels(path);
     ADD_FAILURE() << "no exception for a gap";
   } catch (const util::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no shadow.1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("none for light 1"), std::string::npos) << e.what();
   }
 }
 

@@ -301,10 +301,56 @@ TEST(SceneIo, MeshErrorNamesFieldAndMeshLine) {
 }
 
 TEST(SceneIo, UnknownLightType) {
-  EXPECT_EQ(scene_error(scene(R"([{"type": "spot", "position": [0, 0, 0]}])")),
-            kFile + ": lights[0].type: unknown light type 'spot'; expected point or directional");
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "spot", "position": [0, 0, 0]}])")),
+      kFile + ": lights[0].type: unknown light type 'spot'; expected point, directional or area");
   EXPECT_EQ(scene_error(scene(R"([{"position": [0, 0, 0]}])")),
             kFile + ": lights[0].type: missing required field 'type'");
+}
+
+TEST(SceneIo, AreaLightLoadsItsVerticesExactly) {
+  const Scene s = parse_scene(
+      scene(R"([{"type": "area", "vertices": [[-0.5, 6, -0.5], [0.5, 6, -0.5], [0.1, 6, 0.3]],
+                 "intensity": [2, 1, 0.5]}])"),
+      kScenes / "s.json");
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& l = s.lights[0];
+  EXPECT_EQ(l.type, LightType::area);
+  ASSERT_EQ(l.vertices.size(), 3u);
+  EXPECT_EQ(l.vertices[2].x, 0.1);  // the double 0.1 parses to, not a float's
+  EXPECT_EQ(l.vertices[2].z, 0.3);
+  EXPECT_EQ(l.intensity, (Rgb{2, 1, 0.5}));
+  EXPECT_FALSE(l.light_end);
+}
+
+TEST(SceneIo, AreaLightRules) {
+  EXPECT_EQ(scene_error(scene(R"([{"type": "area", "vertices": [[0, 1, 0], [1, 1, 0]]}])")),
+            kFile + ": lights[0].vertices: an area light needs at least 3 vertices, got 2");
+  EXPECT_EQ(
+      scene_error(scene(R"([{"type": "area", "vertices": [[0, 1, 0], [1, 1, 0], [2, 1, 0]]}])")),
+      kFile +
+          ": lights[0].vertices: the area light's surface has zero area (collinear vertices, or "
+          "an even-odd interior that cancels out)");
+  // a, b, c, b: its two fan triangles are one triangle, counted twice.
+  EXPECT_EQ(scene_error(scene(
+                R"([{"type": "area", "vertices": [[0, 1, 0], [1, 1, 0], [1, 1, 1], [1, 1, 0]]}])")),
+            kFile +
+                ": lights[0].vertices: the area light's surface has zero area (collinear "
+                "vertices, or an even-odd interior that cancels out)");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "area", "vertices": [[0, 1, 0], [1, 1, 0], [1, 1, 1]],
+                                   "light_end": 5}])")),
+            kFile +
+                ": lights[0].light_end: 'light_end' means nothing for an area light (it has no "
+                "range)");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "area", "vertices": [[0, 1, 0], [1, 1, 0], [1, 1, 1]],
+                                   "position": [0, 0, 0]}])")),
+            kFile +
+                ": lights[0].position: unknown field 'position'; expected one of type, "
+                "vertices, intensity");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "area"}])")),
+            kFile + ": lights[0].vertices: missing required field 'vertices'");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "area", "vertices": [[0, 1, 0], [1, 1], [1, 1, 1]]}])")),
+            kFile + ": lights[0].vertices[1]: expected an array of 3 numbers, found an array of 2");
 }
 
 TEST(SceneIo, UnknownFieldIsAnError) {

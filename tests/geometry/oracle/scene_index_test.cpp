@@ -2,11 +2,12 @@
 // and the rest with its BVH. The oracle must not depend on which: the same
 // queries on the data/ scenes (rays through pixel centres and exactly
 // through every mesh vertex, each light's class and shadowing polygons at
-// the hit) answered by a fresh index, whose first queries scan, and by one
-// whose tree is built, agree in every field.
+// the hit, an area light's visible fraction) answered by a fresh index, whose first queries scan,
+// and by one whose tree is built, agree in every field.
 #include <geometry/io/scene_json.h>
 #include <geometry/oracle/scene_index.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/visible_fraction.h>
 #include <geometry/sample_ray.h>
 
 #include <gtest/gtest.h>
@@ -28,6 +29,11 @@ std::string answers(const SceneIndex& index, const SampleRay& ray) {
   if (!hit) return "miss";
   out << hit->polygon << '/' << hit->triangle << '/' << hit->boundary;
   for (std::uint32_t l = 0; l < index.scene().lights.size(); ++l) {
+    if (index.scene().lights[l].type == LightType::area) {
+      const VisibleFraction v = visible_fraction(index, ray, *hit, l);
+      out << ' ' << v.value << v.boundary;
+      continue;
+    }
     const ShadowAnswer a = classify_sample(index, ray, *hit, l);
     out << ' ' << static_cast<int>(a.cls) << a.boundary;
   }

@@ -1,0 +1,26 @@
+#include <geometry/exact/rational_rounding.h>
+
+#include <mpfr.h>
+
+namespace umbra::geometry {
+
+double nearest_double(mpq_srcptr q) {
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q, MPFR_RNDN);
+  const double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+double nearest_sqrt(mpq_srcptr q) {
+  mpfr_t r;
+  mpfr_init2(r, 256);
+  mpfr_set_q(r, q, MPFR_RNDN);
+  mpfr_sqrt(r, r, MPFR_RNDN);
+  const double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+}  // namespace umbra::geometry

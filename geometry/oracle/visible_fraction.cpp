@@ -1,0 +1,367 @@
+#include <geometry/exact/constructions.h>
+#include <geometry/exact/polygon_surface.h>
+#include <geometry/exact/predicates.h>
+#include <geometry/oracle/area_light_pieces.h>
+#include <geometry/oracle/flat_seam.h>
+#include <geometry/oracle/rational_geometry.h>
+#include <geometry/oracle/visible_fraction.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace umbra::geometry {
+namespace {
+
+using namespace soft;
+
+/// What one call works with: H, the ray's direction, and the pyramid from H
+/// over (the convex hull of) one light piece.
+struct Pyramid {
+  P3 h;
+  P3 d;
+  std::vector<Halfspace> sides;  ///< through H and a hull edge, and the light's plane
+  std::vector<P3> base;          ///< the hull, in the light's plane
+  const LightPlane* plane = nullptr;
+  FT h_height;  ///< the light plane's height function at H
+};
+
+/// Projects a polygon inside the closed pyramid but for its apex centrally
+/// from H onto the light's plane, as 2D coordinates there.
+std::vector<Point2> project_from_apex(const Pyramid& pyramid, const std::vector<P3>& polygon) {
+  std::vector<Point2> ring;
+  ring.reserve(polygon.size());
+  for (const P3& x : polygon) {
+    const FT hx = pyramid.plane->height(x);
+    const FT k = pyramid.h_height / (pyramid.h_height - hx);
+    ring.push_back(pyramid.plane->project(add(pyramid.h, scale(sub(x, pyramid.h), k))));
+  }
+  return ring;
+}
+
+/// What the fan triangle (a, b, c), not holding H, blocks of the light.
+bool blocked_by_far_triangle(const Pyramid& pyramid, const std::array<Vec3, 3>& t, Polygon2& out) {
+  std::vector<P3> polygon{exact(t[0]), exact(t[1]), exact(t[2])};
+  for (const Halfspace& side : pyramid.sides) {
+    polygon = clip(polygon, side);
+    if (polygon.size() < 3) return false;
+  }
+  return convex_polygon(project_from_apex(pyramid, polygon), out);
+}
+
+/// What a fan triangle whose closure holds H blocks in the limit ε → 0:
+/// the points y of the light beyond its plane (seen from P) whose segment
+/// from P crosses the plane inside the triangle's corner at H. With n its
+/// normal, s = sign(n·d), and m the inward normal of an edge through H, the
+/// crossing is H + ε·w(y) + O(ε²), w = (n·d)/(n·(y−H))·(y−H) − d, and
+/// m·w > 0 is, for y beyond the plane, the halfspace
+/// s·((n·d)·m − (m·d)·n)·(y − H) > 0.
+bool blocked_by_touching_triangle(const Pyramid& pyramid, const P3& n,
+                                  const std::vector<P3>& inward_normals, Polygon2& out) {
+  const FT nd = dot(n, pyramid.d);
+  const CGAL::Sign s = CGAL::sign(nd);
+  if (s == CGAL::ZERO) return false;  // the ray runs in its plane: nothing beyond, in the limit
+  const FT sign_factor(s == CGAL::POSITIVE ? 1 : -1);
+  std::vector<P3> polygon = pyramid.base;
+  polygon = clip(polygon, Halfspace{scale(n, sign_factor), pyramid.h});
+  for (const P3& m : inward_normals) {
+    if (polygon.size() < 3) return false;
+    const P3 q = scale(sub(scale(m, nd), scale(n, dot(m, pyramid.d))), sign_factor);
+    polygon = clip(polygon, Halfspace{q, pyramid.h});
+  }
+  if (polygon.size() < 3) return false;
+  std::vector<Point2> ring;
+  for (const P3& y : polygon) ring.push_back(pyramid.plane->project(y));
+  return convex_polygon(ring, out);
+}
+
+/// A casting fan triangle near the light, as H sees it: far from H (it
+/// blocks its central projection) or with H in its closure (it blocks a
+/// limit region, the halfspaces of its edges through H).
+struct TriangleAtH {
+  std::array<Vec3, 3> v;
+  bool touches = false;
+  /// Touching: 1 for each edge (v[e], v[e+1]) through H.
+  std::array<bool, 3> through{false, false, false};
+};
+
+/// The candidates' fan triangles that may block, polygon by polygon (a
+/// polygon's surface is its fan triangles counted mod 2), and the touching
+/// triangles of every polygon, casting or not, for the flat-seam test. All
+/// decided with filtered predicates on the input doubles: nothing exact is
+/// built for a triangle that cannot block.
+struct TrianglesAtH {
+  std::vector<std::vector<TriangleAtH>> polygons;
+  std::vector<Touching> touching;
+  bool touches_polygon_edge = false;  ///< H on a polygon edge or vertex (not a diagonal)
+};
+
+HPoint at(const Vec3& v) { return HPoint::point(v); }
+
+TrianglesAtH triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
+                          const SamplePoint& sp, std::span<const Vec3> light) {
+  TrianglesAtH out;
+  const HPoint eye = at(sp.eye);
+  const HPoint along = HPoint::at_infinity(sp.direction);
+  for (std::uint32_t pi : candidates) {
+    const IndexedPolygon& poly = index.polygons()[pi];
+    const std::size_t size = index.size_of(poly);
+    std::vector<TriangleAtH> own;
+    for (const FanTriangle& ft : poly.surface->triangles) {
+      TriangleAtH t{{index.vertex(poly, ft.local[0]), index.vertex(poly, ft.local[1]),
+                     index.vertex(poly, ft.local[2])}};
+      const std::array<Vec3, 3>& v = t.v;
+      if (orientation_at_hit(v[0], at(v[1]), at(v[2]), sp) == Sign::zero) {
+        // H in the triangle's plane: it blocks something only when its
+        // closure holds H (elsewhere in its plane it projects to a line).
+        // Which side of edge (p, q) H lies on, in the plane: with H = E +
+        // t·d, det(q − p, H − p, d) = det(q − p, E − p, d), whose sign is
+        // the side's times sign(n·d).
+        const Sign nd = orientation(v[0], at(v[1]), at(v[2]), along);
+        // The ray runs in its plane: in the limit it blocks nothing, and
+        // with H in its closure some corner projects onto the ray no later
+        // than H, which first_hit reports as a grazing boundary.
+        if (nd == Sign::zero) continue;
+        bool outside = false, on_polygon_edge = false;
+        for (int e = 0; e < 3 && !outside; ++e) {
+          const Sign side = orientation(v[e], at(v[(e + 1) % 3]), eye, along) * nd;
+          if (side == Sign::negative) outside = true;
+          if (side == Sign::zero) {
+            t.through[e] = true;
+            on_polygon_edge = on_polygon_edge || is_polygon_edge(ft, e, size);
+          }
+        }
+        if (outside) continue;
+        t.touches = true;
+        out.touching.push_back({t.v, poly.casts_shadows});
+        out.touches_polygon_edge = out.touches_polygon_edge || on_polygon_edge;
+        // In the limit it blocks only light beyond its plane (seen from
+        // P): none when no light vertex lies strictly there.
+        bool beyond = false;
+        for (const Vec3& y : light)
+          beyond = beyond || orientation(v[0], at(v[1]), at(v[2]), at(y)) == nd;
+        if (!beyond) continue;
+      }
+      if (poly.casts_shadows) own.push_back(t);
+    }
+    if (!own.empty()) out.polygons.push_back(std::move(own));
+  }
+  return out;
+}
+
+/// Whether the far triangle `v` may meet the open pyramid from H over the
+/// piece: false when all its corners lie on the closed outer side of one of
+/// the pyramid's planes (then it meets the pyramid at most on its boundary,
+/// which blocks no area).
+bool may_meet_pyramid(const std::array<Vec3, 3>& v, const LightPiece& piece,
+                      std::span<const Sign> inner, Sign h_side, const SamplePoint& sp) {
+  // The light's plane first: a triangle in it blocks nothing either (the
+  // open segment meets that plane only at its end).
+  const std::array<Vec3, 3>& f = piece.fan.front();
+  bool all_out = true;
+  for (const Vec3& x : v)
+    all_out = all_out && orientation(f[0], at(f[1]), at(f[2]), at(x)) != h_side;
+  if (all_out) return false;
+  const std::size_t m = piece.hull.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    all_out = true;
+    for (const Vec3& x : v)
+      all_out = all_out && orientation_at_hit(piece.hull[i], at(piece.hull[(i + 1) % m]), at(x),
+                                              sp) != inner[i];
+    if (all_out) return false;
+  }
+  return true;
+}
+
+struct PieceResult {
+  FT fraction{1};
+  bool in_plane = false;
+};
+
+PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, const SamplePoint& sp,
+                           const TrianglesAtH& triangles) {
+  PieceResult result;
+  const std::array<Vec3, 3>& f = piece.fan.front();
+  const Sign h_side = orientation_at_hit(f[0], at(f[1]), at(f[2]), sp);
+  if (h_side == Sign::zero) {
+    result.in_plane = true;  // counted apart; V taken as 1 there
+    return result;
+  }
+  // The pyramid's side through H, hull[i] and hull[i+1] has the hull's
+  // next corner strictly inside (H is off the plane, the corners are not
+  // collinear).
+  const std::size_t m = piece.hull.size();
+  std::vector<Sign> inner(m);
+  for (std::size_t i = 0; i < m; ++i)
+    inner[i] = orientation_at_hit(piece.hull[i], at(piece.hull[(i + 1) % m]),
+                                  at(piece.hull[(i + 2) % m]), sp);
+  std::vector<std::vector<const TriangleAtH*>> kept;
+  for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
+    std::vector<const TriangleAtH*> these;
+    for (const TriangleAtH& t : polygon)
+      if (t.touches || may_meet_pyramid(t.v, piece, inner, h_side, sp)) these.push_back(&t);
+    if (!these.empty()) kept.push_back(std::move(these));
+  }
+  if (kept.empty()) return result;  // nothing between H and the light: V = 1
+
+  const LightPlane plane(f[0], f[1], f[2]);
+  Pyramid pyramid{h, d, {}, {}, &plane, plane.height(h)};
+  for (const Vec3& v : piece.hull) pyramid.base.push_back(exact(v));
+  P3 centroid{FT(0), FT(0), FT(0)};
+  for (const P3& p : pyramid.base) centroid = add(centroid, p);
+  centroid = scale(centroid, FT(1) / FT(static_cast<int>(pyramid.base.size())));
+  const P3 inside = add(h, scale(sub(centroid, h), FT(1) / FT(2)));
+  for (std::size_t i = 0; i < m; ++i) {
+    const P3& a = pyramid.base[i];
+    const P3& b = pyramid.base[(i + 1) % m];
+    Halfspace side{cross(sub(a, h), sub(b, h)), h};
+    if (CGAL::is_negative(side.value(inside))) side.normal = scale(side.normal, FT(-1));
+    pyramid.sides.push_back(side);
+  }
+  // The light's plane, H's side kept.
+  Halfspace light_side{
+      cross(sub(pyramid.base[1], pyramid.base[0]), sub(pyramid.base[2], pyramid.base[0])),
+      pyramid.base[0]};
+  if (CGAL::is_negative(light_side.value(h))) light_side.normal = scale(light_side.normal, FT(-1));
+  pyramid.sides.push_back(light_side);
+
+  // Each polygon's blocked part: a lone triangle's is one convex polygon;
+  // several triangles' are combined mod 2. Then one union of them all
+  // (CGAL joins a range by divide and conquer, far faster than one by one).
+  std::vector<Polygon2> singles;
+  std::vector<PolygonWithHoles> multiples;
+  for (const std::vector<const TriangleAtH*>& polygon : kept) {
+    PolygonSet own;
+    std::size_t parts = 0;
+    Polygon2 last;
+    for (const TriangleAtH* t : polygon) {
+      Polygon2 blocked_part;
+      if (t->touches) {
+        const std::array<P3, 3> q{exact(t->v[0]), exact(t->v[1]), exact(t->v[2])};
+        const P3 n = cross(sub(q[1], q[0]), sub(q[2], q[0]));
+        std::vector<P3> inward;
+        for (int e = 0; e < 3; ++e)
+          if (t->through[e]) inward.push_back(cross(n, sub(q[(e + 1) % 3], q[e])));
+        if (!blocked_by_touching_triangle(pyramid, n, inward, blocked_part)) continue;
+      } else if (!blocked_by_far_triangle(pyramid, t->v, blocked_part)) {
+        continue;
+      }
+      if (polygon.size() == 1) {
+        singles.push_back(std::move(blocked_part));
+        continue;
+      }
+      own.symmetric_difference(blocked_part);
+      ++parts;
+    }
+    if (parts > 0) own.polygons_with_holes(std::back_inserter(multiples));
+  }
+  if (singles.empty() && multiples.empty()) return result;
+  if (piece.convex && singles.size() == 1 && multiples.empty()) {
+    // One convex part over a convex light (the common penumbra of one
+    // edge, a light straddling the receiver's plane): their intersection
+    // by clipping, no arrangement.
+    std::vector<Point2> hull2;
+    for (const Vec3& v : piece.hull) hull2.push_back(plane.project(v));
+    Polygon2 region;
+    if (!convex_polygon(hull2, region)) return result;
+    result.fraction = FT(1) - ring_area(clip_convex(singles.front(), region)) / region.area();
+    return result;
+  }
+  PolygonSet blocked;
+  blocked.join(singles.begin(), singles.end(), multiples.begin(), multiples.end());
+  const PolygonSet region = piece_region(plane, piece);
+  const FT region_area = area_of(region);
+  blocked.intersection(region);
+  result.fraction = FT(1) - area_of(blocked) / region_area;
+  return result;
+}
+
+}  // namespace
+
+bool area_light_has_area(std::span<const Vec3> vertices) {
+  for (const LightPiece& piece : light_pieces(vertices)) {
+    const std::array<Vec3, 3>& first = piece.fan.front();
+    const LightPlane plane(first[0], first[1], first[2]);
+    if (!CGAL::is_zero(area_of(piece_region(plane, piece)))) return true;
+  }
+  return false;
+}
+
+VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
+                                 const SurfaceHit& hit, std::uint32_t light_index) {
+  const Light& light = index.scene().lights.at(light_index);
+  if (light.type != LightType::area)
+    throw std::logic_error("visible_fraction: light " + std::to_string(light_index) +
+                           " is not an area light");
+  const HitTriangle tri = hit_triangle(index, hit);
+  const SamplePoint sp{ray.origin, ray.direction, tri.a, tri.b, tri.c};
+
+  // Candidates: every polygon whose box meets the box of H and the light
+  // (which holds every pyramid), with slack for H's rounding.
+  const double t = ray_plane_parameter(ray.origin, ray.direction, tri.a, tri.b, tri.c);
+  const Vec3 approx_h = ray.origin + t * ray.direction;
+  Box box;
+  box.extend(approx_h);
+  for (const Vec3& v : light.vertices) box.extend(v);
+  const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) + 1e-300;
+  std::vector<std::uint32_t> candidates;
+  index.query_box(box, slack, candidates);
+  std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
+
+  const TrianglesAtH triangles = triangles_at(index, candidates, sp, light.vertices);
+  // H = eye + t·d exactly, t = n·(a − eye) / n·d on the hit triangle's
+  // plane: made only when something may block.
+  const auto exact_h = [&] {
+    const P3 a = exact(tri.a);
+    const P3 n = cross(sub(exact(tri.b), a), sub(exact(tri.c), a));
+    const P3 eye = exact(ray.origin);
+    const P3 d = exact(ray.direction);
+    return add(eye, scale(d, dot(n, sub(a, eye)) / dot(n, d)));
+  };
+  std::optional<P3> h;
+  const P3 d = exact(ray.direction);
+  if (!triangles.polygons.empty()) h = exact_h();
+
+  VisibleFraction answer;
+  bool in_plane = false;
+  const std::vector<LightPiece> pieces = light_pieces(light.vertices);
+  std::vector<double> fractions;
+  for (const LightPiece& piece : pieces) {
+    const PieceResult r =
+        triangles.polygons.empty()
+            ? PieceResult{FT(1), orientation_at_hit(piece.fan[0][0], at(piece.fan[0][1]),
+                                                    at(piece.fan[0][2]), sp) == Sign::zero}
+            : piece_fraction(piece, *h, d, sp, triangles);
+    in_plane = in_plane || r.in_plane;
+    fractions.push_back(nearest_double(r.fraction));
+  }
+  // One piece: its fraction. Several: weighted by their areas, which are
+  // made (exactly, then rounded) only where the fractions differ.
+  answer.value = fractions.front();
+  if (std::any_of(fractions.begin(), fractions.end(),
+                  [&](double f) { return f != fractions.front(); })) {
+    double weighted = 0, total = 0;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const double w = piece_area(pieces[k]);
+      total += w;
+      weighted += w * fractions[k];
+    }
+    answer.value = total > 0 ? std::clamp(weighted / total, 0.0, 1.0) : 1.0;
+  }
+  // A flat seam (coplanar triangles meeting at H, covering it once) leaves
+  // both the visible surface and V continuous; any other edge or vertex at
+  // H, a crease, or a grazing ray does not.
+  const bool at_edge = hit.boundary || triangles.touches_polygon_edge;
+  if (in_plane || hit.grazes) {
+    answer.boundary = true;
+  } else if (at_edge) {
+    const P3 hh = h ? *h : exact_h();
+    answer.boundary = !flat_seam(triangles.touching, hh);
+  }
+  return answer;
+}
+
+}  // namespace umbra::geometry

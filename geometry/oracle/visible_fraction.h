@@ -1,0 +1,47 @@
+#pragma once
+// The exact visible fraction of an area light (DESIGN.md "Area lights",
+// docs/soft-shadows.md): the truth soft shadows are judged by.
+//
+// V(P) = area{y in S : the open segment P→y crosses no shadow-casting
+// polygon's surface an odd number of times} / area(S), for the sample point
+// P = H - ε·d. Computed as the limit ε → 0 (V is the standard part of the
+// fraction at an infinitesimal ε): every casting fan triangle not touching
+// H is clipped to the pyramid from H over the light and projected centrally
+// from H onto the light's plane; a fan triangle whose closure holds H blocks,
+// in the limit, the part of the light beyond its plane that its corner at H
+// faces (a half-plane per edge through H). Per polygon the pieces are
+// combined by parity (its surface is its fan triangles counted mod 2), across
+// polygons by union, all with CGAL's exact Boolean operations on Epeck.
+#include <geometry/exact/visible_surface.h>
+#include <geometry/oracle/scene_index.h>
+#include <geometry/sample_ray.h>
+
+#include <cstdint>
+#include <span>
+
+namespace umbra::geometry {
+
+struct VisibleFraction {
+  /// V(P) in [0, 1]: for a planar light the exact rational rounded to the
+  /// nearest double; for a non-planar one the fan triangles' exact fractions
+  /// weighted by their areas (square roots, rounded: within a few ulps).
+  double value = 1;
+  /// Counted apart by DESIGN.md, any value is acceptable from a method: the
+  /// hit is on a boundary (an edge, a vertex, a crease, a grazing ray)
+  /// other than a flat seam, H lies on an edge or vertex of a casting
+  /// polygon that holds it, or H lies in the plane of the light (of one of
+  /// its fan triangles).
+  bool boundary = false;
+};
+
+/// Whether an area light's polygon has a surface of nonzero area (its
+/// even-odd interior when planar, its fan triangles when not).
+bool area_light_has_area(std::span<const Vec3> vertices);
+
+/// V(P) of area light `light` (an index into the scene's lights, which must
+/// be an area light) for the sample of `ray` whose first hit is `hit`.
+/// Thread-safe: every exact object is made by the call.
+VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
+                                 const SurfaceHit& hit, std::uint32_t light);
+
+}  // namespace umbra::geometry
