@@ -46,6 +46,8 @@ void check_method_options(const RenderArgs& args) {
     throw util::InputError("--map-*", "applies to --method map only");
   if (args.ray_epsilon && args.method != "ray")
     throw util::InputError("--ray-epsilon", "applies to --method ray only");
+  if (args.area_samples && args.method != "ray")
+    throw util::InputError("--area-samples", "applies to --method ray only");
 }
 
 /// A label of what a tile was rendered from: the bytes of every file the
@@ -58,13 +60,15 @@ std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
     hash = (hash ^ 0xff) * 0x100000001b3ull;  // a separator
   };
   for (const fs::path& input : scene.inputs) add(util::read_input_file(input, "scene input"));
-  // Exposure only when given, so that labels of earlier tiles still match.
-  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}{}", args.method,
+  // Exposure and area samples only when given, so that labels of earlier
+  // tiles still match.
+  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}{}{}", args.method,
                   args.spp, !args.no_shadows, args.map_resolution.value_or(-1),
                   args.map_bias.value_or(-1), args.map_slope_bias.value_or(-1),
                   args.map_lookup.value_or(""), args.map_dither, args.map_pcf.value_or(-1),
                   args.ray_epsilon.value_or(-1),
-                  args.exposure != 0 ? fmt::format(" exposure={}", args.exposure) : ""));
+                  args.exposure != 0 ? fmt::format(" exposure={}", args.exposure) : "",
+                  args.area_samples ? fmt::format(" area_samples={}", *args.area_samples) : ""));
   return fmt::format("{:016x}", hash);
 }
 
@@ -168,6 +172,12 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->check(finite_non_negative())
       ->default_str(fmt::format("{}", raster::RayOptions{}.epsilon))
       ->type_name("E");
+  cmd->add_option("--area-samples", args.area_samples,
+                  "Stratified sample points per area light and visible sample, one occlusion ray "
+                  "each; visibility.<i> is the fraction unoccluded (ray only)")
+      ->check(CLI::Range(1, raster::kMaxAreaSamples))
+      ->default_str(std::to_string(raster::RayOptions{}.area_samples))
+      ->type_name("N");
   cmd->add_option("--threads", args.threads, "Worker threads (0 = the CPUs the process may use)")
       ->check(thread_count())
       ->type_name("N");
@@ -242,6 +252,7 @@ int run_render(const RenderArgs& args) {
   options.exposure = args.exposure;
   options.map = map_options(args);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
+  if (args.area_samples) options.ray.area_samples = *args.area_samples;
   if (tile) {
     const int bands =
         (scene.camera.height + raster::kTileRowAlignment - 1) / raster::kTileRowAlignment;

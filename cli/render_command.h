@@ -1,7 +1,7 @@
 #pragma once
 // `umbra render SCENE [-o OUT] [--method volume|map|ray|exact] [--threads N]
-//                     [--map-* ...] [--ray-epsilon E] [--tile I/N] [--stats-json FILE]
-//                     [--quiet]`
+//                     [--map-* ...] [--ray-epsilon E] [--area-samples N] [--tile I/N]
+//                     [--stats-json FILE] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <optional>
@@ -31,6 +31,7 @@ struct RenderArgs {
   std::optional<int> map_pcf;
   // --method ray (raster::RayOptions)
   std::optional<double> ray_epsilon;
+  std::optional<int> area_samples;  ///< sample points per area light and visible sample
 };
 
 /// Adds the `render` subcommand to `app`, parsing into `args`.

@@ -36,6 +36,9 @@ struct ShadowMapOptions {
   int pcf = 1;
 };
 
+/// The most sample points RayOptions::area_samples may ask for (2^20).
+inline constexpr int kMaxAreaSamples = 1 << 20;
+
 /// Ray-cast shadows (Method::ray): Embree in single precision
 /// (docs/ray-cast.md).
 struct RayOptions {
@@ -47,6 +50,16 @@ struct RayOptions {
   /// light and leaks begin near 1e-2 (docs/ray-cast.md). 0 is allowed and
   /// shows the acne.
   double epsilon = 1e-5;
+  /// Area lights: sample points on the light's surface per visible sample,
+  /// one occlusion ray each (started and ended as a point light's ray, with
+  /// the same epsilon); visibility.<i> is the fraction unoccluded. Stratified
+  /// (N cells of equal area, about sqrt(N) x sqrt(N), one jittered point
+  /// each, spread over the light's fan triangles by area), seeded per pixel
+  /// and light: the same bytes for the same options whatever the thread
+  /// count. 1 to kMaxAreaSamples (else std::invalid_argument). Measured on
+  /// data/scenes/soft.json, the mean |V - V_exact| in the penumbra falls
+  /// about as N^-0.7: 0.040, 0.014, 0.0058 at N = 16, 64, 256.
+  int area_samples = 64;
 };
 
 /// The largest |exposure| render accepts, in stops: 2^64 scales any
@@ -121,7 +134,8 @@ struct RenderStats {
   std::uint64_t degenerate_polygons = 0;
   /// Method::ray: seconds building Embree's BVHs (the tracing itself is
   /// seconds_decide), primary rays traced (one per pixel) and occlusion
-  /// rays traced (one per visible sample and light that could reach it).
+  /// rays traced (one per visible sample and light that could reach it;
+  /// for an area light, one per sample point not decided without a ray).
   double seconds_bvh = 0;
   double ray_offset = 0;  ///< the shadow-ray offset in scene units: epsilon × diagonal
   std::uint64_t primary_rays = 0;

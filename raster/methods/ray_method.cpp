@@ -5,7 +5,16 @@
 // that can reach them. Nothing is decided exactly: every float mistake
 // (acne, leaks, misses at shared edges) is the method's error, which the
 // validator counts.
+//
+// Area lights (DESIGN.md "Area lights"): N = RayOptions::area_samples
+// stratified points y on the light's surface per visible sample, an
+// occlusion ray from the float hit point toward each (started and ended as a
+// point light's ray is), V = unoccluded / N. The sampling is deterministic,
+// seeded per pixel and light: a render is the same bytes whatever the
+// thread count or tiling.
+#include <geometry/exact/polygon_surface.h>
 #include <raster/light_windows.h>
+#include <raster/methods/area_light_samples.h>
 #include <raster/methods/embree_scene.h>
 #include <raster/methods/render_methods.h>
 #include <raster/pixel_sample.h>
@@ -15,17 +24,28 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace umbra::raster {
 
 using geometry::ShadowClass;
+using geometry::Vec3;
 
 namespace {
+
+using area_sampling::area_seed;
+using area_sampling::area_surfaces;
+using area_sampling::AreaPoint;
+using area_sampling::AreaSurface;
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
@@ -46,7 +66,7 @@ std::vector<FloatLight> float_lights(const geometry::Scene& scene) {
   for (const geometry::Light& l : scene.lights) {
     FloatLight f;
     f.directional = l.type == geometry::LightType::directional;
-    f.position = to_float(l.position);
+    f.position = to_float(l.position);  // an area light's is unused: AreaSurface samples it
     if (f.directional) f.toward = -glm::normalize(to_float(l.direction));
     if (l.type == geometry::LightType::point && l.light_end) f.light_end = *l.light_end;
     out.push_back(f);
@@ -98,6 +118,55 @@ Reach shadow_ray(const FloatLight& light, const glm::vec3& h, const glm::vec3& n
   return Reach::trace;
 }
 
+/// Occlusion rays per rtcOccluded1M call for an area light: N can be up
+/// to kMaxAreaSamples, far too many to hold at once for a row.
+constexpr std::uint64_t kAreaRayChunk = 256;
+
+/// V of area light `light` at the float hit point `h` of pixel `pixel`
+/// (the rest as shadow_ray's): n sample points, each either behind the hit
+/// surface as seen from the eye (blocked, no ray), nearer than twice the
+/// offset (nothing fits between: unoccluded) or decided by an occlusion
+/// ray. Adds the rays traced to `rays_traced`.
+double area_visibility(const AreaSurface& surface, std::uint64_t n, std::size_t pixel,
+                       std::uint32_t light, const glm::vec3& h, const glm::vec3& ng,
+                       const glm::vec3& to_eye, bool casts, float offset, RTCScene casters,
+                       std::vector<RTCRay>& rays, std::vector<double>& weights,
+                       std::uint64_t& rays_traced) {
+  if (surface.empty()) return 1;  // no area: nothing to block (the loader refuses these)
+  const std::uint64_t seed = area_seed(pixel, light);
+  double drawn = 0, seen = 0;
+  FloatLight at;  // a point light at each sample point
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  for (std::uint64_t begin = 0; begin < n; begin += kAreaRayChunk) {
+    rays.clear();
+    weights.clear();
+    for (std::uint64_t k = begin; k < std::min(n, begin + kAreaRayChunk); ++k) {
+      const AreaPoint y = surface.point(k, n, seed);
+      if (y.weight == 0) continue;
+      drawn += y.weight;
+      at.position = y.y;
+      RTCRay ray;
+      if (shadow_ray(at, h, ng, to_eye, casts, offset, ray) != Reach::trace) continue;
+      if (ray.tfar > ray.tnear) {
+        rays.push_back(ray);
+        weights.push_back(y.weight);
+      } else {
+        seen += y.weight;
+      }
+    }
+    if (rays.empty()) continue;
+    rtcOccluded1M(casters, &context, rays.data(), static_cast<unsigned>(rays.size()),
+                  sizeof(RTCRay));
+    for (std::size_t q = 0; q < rays.size(); ++q)
+      if (rays[q].tfar != -kInfinity) seen += weights[q];
+    rays_traced += rays.size();
+  }
+  // Without overlapping fan triangles every weight is 1: seen / drawn is
+  // unoccluded / N exactly (integers below 2^53 in doubles).
+  return drawn > 0 ? seen / drawn : 0.0;
+}
+
 /// One row's primary rays: DESIGN.md's sample rays rounded to float.
 void primary_rays(const geometry::CameraFrame& camera, int j, std::vector<RTCRayHit>& rays) {
   for (int i = 0; i < camera.width; ++i) {
@@ -125,6 +194,10 @@ void primary_rays(const geometry::CameraFrame& camera, int j, std::vector<RTCRay
 Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options,
                  RenderStats& stats) {
   const geometry::Scene& scene = index.scene();
+  if (options.ray.area_samples < 1 || options.ray.area_samples > kMaxAreaSamples)
+    throw std::invalid_argument("render: area_samples must be 1 to " +
+                                std::to_string(kMaxAreaSamples) + ", got " +
+                                std::to_string(options.ray.area_samples));
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
@@ -144,7 +217,10 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
                                    ? light_windows(camera, scene.lights)
                                    : LightWindows::whole(camera.width, camera.height, lights);
   Frame frame(camera.width, camera.height, windows, options.threads);
+  frame.soft = soft_lights(scene);
   const std::vector<FloatLight> float_light = float_lights(scene);
+  const std::vector<std::optional<AreaSurface>> area = area_surfaces(scene);
+  const auto area_samples = static_cast<std::uint64_t>(options.ray.area_samples);
   const float offset = static_cast<float>(options.ray.epsilon * rt.diagonal());
   stats.ray_offset = offset;
   const auto width = static_cast<std::size_t>(camera.width);
@@ -171,7 +247,12 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
     }
     first[width] = here.size();
     // Classes known without a ray; occlusion rays for the rest, one stream.
+    // An area light's visible fraction is decided at once, pixel by pixel.
     std::vector<ShadowClass> classes(here.size(), ShadowClass::lit);
+    std::vector<float> visibility(here.size(), 1.0f);
+    std::vector<RTCRay> area_rays;
+    std::vector<double> area_weights;
+    std::uint64_t area_rays_traced = 0;
     std::vector<RTCRay> occlusion;
     std::vector<std::size_t> slot;  // classes[] index of each occlusion ray
     occlusion.reserve(here.size());
@@ -184,6 +265,15 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       const glm::vec3 h = org + p.ray.tfar * dir;  // the float hit point
       const glm::vec3 ng{p.hit.Ng_x, p.hit.Ng_y, p.hit.Ng_z};
       for (std::size_t k = first[i]; k < first[i + 1]; ++k) {
+        if (const std::optional<AreaSurface>& surface = area[here[k]]) {
+          const auto v = static_cast<float>(
+              area_visibility(*surface, area_samples, frame.pixel(static_cast<int>(i), j), here[k],
+                              h, ng, -dir, rt.casts(p.hit.primID), offset, rt.casters(), area_rays,
+                              area_weights, area_rays_traced));
+          visibility[k] = v;
+          classes[k] = v > 0 ? ShadowClass::lit : ShadowClass::shadowed;
+          continue;
+        }
         RTCRay ray;
         switch (
             shadow_ray(float_light[here[k]], h, ng, -dir, rt.casts(p.hit.primID), offset, ray)) {
@@ -210,7 +300,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
                     static_cast<unsigned>(occlusion.size()), sizeof(RTCRay));
     for (std::size_t k = 0; k < occlusion.size(); ++k)
       if (occlusion[k].tfar == -kInfinity) classes[slot[k]] = ShadowClass::shadowed;
-    shadow_rays += occlusion.size();
+    shadow_rays += occlusion.size() + area_rays_traced;
 
     PixelSample sample;
     for (std::size_t i = 0; i < width; ++i) {
@@ -231,9 +321,13 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       sample.lights.assign(lights_here.begin(), lights_here.end());
       sample.classes.assign(classes.begin() + static_cast<std::ptrdiff_t>(first[i]),
                             classes.begin() + static_cast<std::ptrdiff_t>(first[i + 1]));
+      sample.visibility.assign(visibility.begin() + static_cast<std::ptrdiff_t>(first[i]),
+                               visibility.begin() + static_cast<std::ptrdiff_t>(first[i + 1]));
       sample.counts.resize(sample.classes.size());
+      // An area light's count is 0: no depth count decides it.
       for (std::size_t k = 0; k < sample.classes.size(); ++k)
-        sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
+        sample.counts[k] =
+            sample.classes[k] == ShadowClass::shadowed && !area[sample.lights[k]] ? 1 : 0;
       store_sample(scene, geometry::sample_ray(camera, static_cast<int>(i), j), sample, pixel,
                    frame);
     }
