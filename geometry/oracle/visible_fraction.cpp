@@ -1,4 +1,5 @@
 #include <geometry/exact/constructions.h>
+#include <geometry/exact/coordinate_range.h>
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/oracle/area_light_pieces.h>
@@ -299,16 +300,25 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   const HitTriangle tri = hit_triangle(index, hit);
   const SamplePoint sp{ray.origin, ray.direction, tri.a, tri.b, tri.c};
 
-  // Candidates: every polygon whose box meets the box of H and the light
-  // (which holds every pyramid), with slack for H's rounding.
+  // Candidates: every polygon whose box comes within r of the segment from
+  // H to the light's centre c, r (`reach`) the light's largest coordinate distance
+  // from c. A point H + s·(y − H) of the pyramid (y on the light, s in
+  // [0, 1]) lies s·(y − c) from the segment's point H + s·(c − H), each
+  // coordinate within r: the pyramid lies in the segment's box widened by
+  // r, and a small light's candidates are those near its ray, not those in
+  // the box of H and the light (which held the whole model for many floor
+  // samples). The slack adds H's rounding and r's.
   const double t = ray_plane_parameter(ray.origin, ray.direction, tri.a, tri.b, tri.c);
   const Vec3 approx_h = ray.origin + t * ray.direction;
-  Box box;
-  box.extend(approx_h);
-  for (const Vec3& v : light.vertices) box.extend(v);
-  const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) + 1e-300;
+  Vec3 centre{0, 0, 0};
+  for (const Vec3& v : light.vertices) centre = centre + v;
+  centre = centre * (1.0 / static_cast<double>(light.vertices.size()));
+  double reach = 0;
+  for (const Vec3& v : light.vertices) reach = std::max(reach, max_abs(v - centre));
+  const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) +
+                       reach * (1 + 1e-12) + 1e-300;
   std::vector<std::uint32_t> candidates;
-  index.query_box(box, slack, candidates);
+  index.query_segment(approx_h, centre, false, slack, candidates);
   std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
 
   const TrianglesAtH triangles = triangles_at(index, candidates, sp, light.vertices);
