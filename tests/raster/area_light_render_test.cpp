@@ -93,7 +93,8 @@ TEST(AreaLightRender, ShadingScalesTheLightByItsVisibleFraction) {
 }
 
 TEST(AreaLightRender, SupersamplingKeepsTheCentreSamplesVisibleFractions) {
-  const geometry::Scene scene = soft_square();
+  geometry::Scene scene = soft_square();
+  scene.camera.width = scene.camera.height = 24;  // 72 x 72 samples
   const Frame fine = render(scene, {.method = Method::volume, .threads = 2, .spp = 9});
   ASSERT_TRUE(fine.is_soft(0));
   const Frame centre = render(scene, {.method = Method::volume, .threads = 2});

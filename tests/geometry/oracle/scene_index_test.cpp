@@ -23,13 +23,16 @@ namespace umbra::geometry {
 namespace {
 
 /// Everything the oracle says about `ray`, as text to compare.
-std::string answers(const SceneIndex& index, const SampleRay& ray) {
+/// `area`: also the area lights' visible fractions (each costs exact
+/// Boolean operations where the light is partly hidden).
+std::string answers(const SceneIndex& index, const SampleRay& ray, bool area) {
   std::ostringstream out;
   const std::optional<SurfaceHit> hit = first_hit(index, ray);
   if (!hit) return "miss";
   out << hit->polygon << '/' << hit->triangle << '/' << hit->boundary;
   for (std::uint32_t l = 0; l < index.scene().lights.size(); ++l) {
     if (index.scene().lights[l].type == LightType::area) {
+      if (!area) continue;
       const VisibleFraction v = visible_fraction(index, ray, *hit, l);
       out << ' ' << v.value << v.boundary;
       continue;
@@ -67,11 +70,12 @@ TEST(SceneIndex, ScanAndTreeGiveTheOracleTheSameAnswers) {
     std::vector<std::uint32_t> ignored;
     for (std::uint32_t k = 0; k <= SceneIndex::kLinearQueries; ++k)
       tree.query_box(Box{}, 0.0, ignored);
-    for (const SampleRay& ray : rays) {
+    for (std::size_t k = 0; k < rays.size(); ++k) {
       // A fresh index a ray: its queries (the first hit, a segment per
-      // light, up to kLinearQueries) all scan.
+      // light, up to kLinearQueries) all scan. Area lights every 8th ray:
+      // all of them took a minute under the sanitizers.
       const SceneIndex scanning(scene);
-      EXPECT_EQ(answers(scanning, ray), answers(tree, ray));
+      EXPECT_EQ(answers(scanning, rays[k], k % 8 == 0), answers(tree, rays[k], k % 8 == 0));
       ++compared;
     }
   }
