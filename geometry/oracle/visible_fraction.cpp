@@ -237,7 +237,6 @@ PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, co
   for (const std::vector<const TriangleAtH*>& polygon : kept) {
     PolygonSet own;
     std::size_t parts = 0;
-    Polygon2 last;
     for (const TriangleAtH* t : polygon) {
       Polygon2 blocked_part;
       if (t->touches) {
@@ -275,6 +274,9 @@ PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, co
   blocked.join(singles.begin(), singles.end(), multiples.begin(), multiples.end());
   const PolygonSet region = piece_region(plane, piece);
   const FT region_area = area_of(region);
+  // No area, no weight (the loader refuses such lights; a Scene built in
+  // code may still hold one): never a division by zero.
+  if (CGAL::is_zero(region_area)) return result;
   blocked.intersection(region);
   result.fraction = FT(1) - area_of(blocked) / region_area;
   return result;
