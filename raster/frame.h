@@ -1,6 +1,7 @@
 #pragma once
 // What every render method produces: the beauty pass and the AOVs of
 // DESIGN.md, as plain buffers, row-major from the top-left pixel.
+#include <geometry/scene.h>
 #include <raster/light_windows.h>
 #include <util/huge_pages.h>
 
@@ -37,6 +38,16 @@ inline constexpr int kTileRowAlignment = 8;
 /// `height` rows high: the bands of kTileRowAlignment rows split as evenly as
 /// possible, in order; a tile may be empty when count exceeds the bands.
 RowRange tile_rows(int height, int index, int count);
+
+/// Frame::soft for `scene`: 1 for each area light. Every method sets it on
+/// its frame before storing a sample (store_sample reads it); the
+/// validator compares it with an image's channel kinds.
+inline std::vector<std::uint8_t> soft_lights(const geometry::Scene& scene) {
+  std::vector<std::uint8_t> soft;
+  for (const geometry::Light& light : scene.lights)
+    soft.push_back(light.type == geometry::LightType::area ? 1 : 0);
+  return soft;
+}
 
 struct Frame {
   int width = 0;

@@ -72,14 +72,6 @@ std::uint64_t ValidationReport::total_mismatches() const {
 
 namespace {
 
-/// 1 for each area light of the scene.
-std::vector<std::uint8_t> soft_of(const geometry::Scene& scene) {
-  std::vector<std::uint8_t> soft;
-  for (const geometry::Light& light : scene.lights)
-    soft.push_back(light.type == geometry::LightType::area ? 1 : 0);
-  return soft;
-}
-
 void check_fits(const std::string& where, int width, int height, std::size_t lights,
                 std::span<const std::uint8_t> soft, const ShadowChannels& image) {
   if (image.width != width || image.height != height) {
@@ -123,7 +115,7 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
   truth.cls.assign(truth.pixels.size() * truth.lights, ShadowClass::lit);
   truth.boundary.assign(truth.pixels.size() * truth.lights, 0);
   truth.visibility.assign(truth.pixels.size() * truth.lights, 1.0);
-  truth.soft = soft_of(scene);
+  truth.soft = soft_lights(scene);
 
   const geometry::SceneIndex index(scene);
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
@@ -229,8 +221,8 @@ ValidationReport validate_render(const geometry::Scene& scene, const ShadowChann
                                  const ValidateOptions& options) {
   const std::string where = scene.source.empty() ? "validate" : scene.source.string();
   // A misfit image is refused before the oracle's long run.
-  check_fits(where, scene.camera.width, scene.camera.height, scene.lights.size(), soft_of(scene),
-             image);
+  check_fits(where, scene.camera.width, scene.camera.height, scene.lights.size(),
+             soft_lights(scene), image);
   return score_render(oracle_truth(scene, options), image, where);
 }
 

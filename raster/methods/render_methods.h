@@ -8,22 +8,12 @@
 
 #include <cstddef>
 #include <span>
-#include <vector>
 
 namespace umbra::raster {
 
 /// The rows `options` asks for (a tile), or every row of the image.
 inline RowRange rows_to_render(const RenderOptions& options, int height) {
   return options.rows ? *options.rows : RowRange{0, height};
-}
-
-/// Frame::soft for `scene`: 1 for each area light. Every method sets it on
-/// its frame before storing a sample (store_sample reads it).
-inline std::vector<std::uint8_t> soft_lights(const geometry::Scene& scene) {
-  std::vector<std::uint8_t> soft;
-  for (const geometry::Light& light : scene.lights)
-    soft.push_back(light.type == geometry::LightType::area ? 1 : 0);
-  return soft;
 }
 
 /// Calls row(j) for every row j of `rows`, one row at a time from up to
