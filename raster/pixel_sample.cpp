@@ -28,8 +28,9 @@ PixelSample::PixelSample(std::size_t every)
 
 void decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
                        const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
-                       PixelSample& sample) {
-  const float v = static_cast<float>(geometry::visible_fraction(index, ray, hit, light).value);
+                       geometry::FractionPrecision precision, PixelSample& sample) {
+  const float v =
+      static_cast<float>(geometry::visible_fraction(index, ray, hit, light, precision).value);
   sample.visibility[k] = v;
   sample.classes[k] = v > 0 ? ShadowClass::lit : ShadowClass::shadowed;
   sample.counts[k] = 0;

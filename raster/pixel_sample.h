@@ -2,6 +2,7 @@
 // One decided sample, whichever method decided it, and how it lands in the
 // frame: the beauty pass shaded from its classes, and every AOV.
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/visible_fraction.h>
 #include <geometry/sample_ray.h>
 #include <raster/frame.h>
 #include <raster/shading.h>
@@ -35,11 +36,12 @@ struct PixelSample {
 };
 
 /// Area light `light`, entry k of the sample's list, at the sample of `ray`
-/// whose first hit is `hit`: its exact visible fraction
-/// (geometry::visible_fraction), lit where it is above 0, count 0.
+/// whose first hit is `hit`: its visible fraction
+/// (geometry::visible_fraction, exact or certified), lit where it is above
+/// 0, count 0.
 void decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
                        const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
-                       PixelSample& sample);
+                       geometry::FractionPrecision precision, PixelSample& sample);
 
 /// Writes `sample` to pixel `pixel` of `frame`: beauty (ambient plus the lit
 /// lights, the normal turned to face the eye), shadow.<i>, count.<i>, depth.

@@ -105,46 +105,14 @@ void Bvh::scan_box(const std::vector<Box>& boxes, const Box& box, double slack,
 }
 
 void Bvh::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {
-  if (nodes_.empty()) return;
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!overlaps(node.box, box, slack)) continue;
-    if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-        if (overlaps(boxes_[order_[i]], box, slack)) out.push_back(order_[i]);
-      }
-    } else {
-      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
-      stack[top++] = self + 1;
-      stack[top++] = node.first;
-    }
-  }
+  query_if([&](const Box& b) { return overlaps(b, box, slack); }, out);
 }
 
 void Bvh::query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
                         std::vector<std::uint32_t>& out) const {
-  if (nodes_.empty()) return;
   const Vec3 dir = to_is_direction ? to : to - from;
   const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!meets(node.box, from, dir, s_max, slack)) continue;
-    if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-        if (meets(boxes_[order_[i]], from, dir, s_max, slack)) out.push_back(order_[i]);
-      }
-    } else {
-      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
-      stack[top++] = self + 1;
-      stack[top++] = node.first;
-    }
-  }
+  query_if([&](const Box& b) { return meets(b, from, dir, s_max, slack); }, out);
 }
 
 }  // namespace umbra::geometry

@@ -25,6 +25,29 @@ class Bvh {
   /// coordinates' size). Appends to `out`.
   void query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const;
 
+  /// Items whose box, and every enclosing node's, `keep` accepts: `keep`
+  /// must accept every box that meets what is sought (false only for a box
+  /// certainly apart from it). Appends to `out`.
+  template <class Keep>
+  void query_if(const Keep& keep, std::vector<std::uint32_t>& out) const {
+    if (nodes_.empty()) return;
+    std::uint32_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[stack[--top]];
+      if (!keep(node.box)) continue;
+      if (node.count > 0) {
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+          if (keep(boxes_[order_[i]])) out.push_back(order_[i]);
+      } else {
+        const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
+        stack[top++] = self + 1;
+        stack[top++] = node.first;
+      }
+    }
+  }
+
   std::size_t size() const { return boxes_.size(); }
 
   /// The same queries over `boxes` without a tree, item by item in index

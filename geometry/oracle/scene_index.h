@@ -45,6 +45,17 @@ class SceneIndex {
   void query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
                      std::vector<std::uint32_t>& out) const;
   void query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const;
+  /// Polygons whose box `keep` accepts (Bvh::query_if); by a scan, in index
+  /// order, before the tree is built.
+  template <class Keep>
+  void query_if(const Keep& keep, std::vector<std::uint32_t>& out) const {
+    if (const Bvh* bvh = tree()) {
+      bvh->query_if(keep, out);
+      return;
+    }
+    for (std::uint32_t i = 0; i < boxes_.size(); ++i)
+      if (keep(boxes_[i])) out.push_back(i);
+  }
 
   /// Queries answered by a scan before the BVH is built.
   static constexpr std::uint32_t kLinearQueries = 32;

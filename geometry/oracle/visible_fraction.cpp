@@ -3,13 +3,16 @@
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/oracle/area_light_pieces.h>
+#include <geometry/oracle/certified_fraction.h>
 #include <geometry/oracle/flat_seam.h>
+#include <geometry/oracle/pyramid_filter.h>
 #include <geometry/oracle/rational_geometry.h>
 #include <geometry/oracle/visible_fraction.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -103,7 +106,8 @@ struct TrianglesAtH {
 HPoint at(const Vec3& v) { return HPoint::point(v); }
 
 TrianglesAtH triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
-                          const SamplePoint& sp, std::span<const Vec3> light) {
+                          const SamplePoint& sp, const SurfaceHit& hit, std::span<const Vec3> light,
+                          const PyramidFilter& filter) {
   TrianglesAtH out;
   const HPoint eye = at(sp.eye);
   const HPoint along = HPoint::at_infinity(sp.direction);
@@ -114,8 +118,16 @@ TrianglesAtH triangles_at(const SceneIndex& index, std::span<const std::uint32_t
     for (const FanTriangle& ft : poly.surface->triangles) {
       TriangleAtH t{{index.vertex(poly, ft.local[0]), index.vertex(poly, ft.local[1]),
                      index.vertex(poly, ft.local[2])}};
+      // Certainly outside every pyramid: it neither blocks nor holds H.
+      if (filter.misses(t.v)) continue;
       const std::array<Vec3, 3>& v = t.v;
-      if (orientation_at_hit(v[0], at(v[1]), at(v[2]), sp) == Sign::zero) {
+      // H lies in the plane of the hit's fan triangle, and of all of a
+      // planar hit polygon's, by construction: no exact test needed.
+      const bool in_hit_plane =
+          pi == hit.polygon &&
+          (poly.surface->shape == PolygonShape::planar ||
+           static_cast<std::size_t>(&ft - poly.surface->triangles.data()) == hit.triangle);
+      if (in_hit_plane || orientation_at_hit(v[0], at(v[1]), at(v[2]), sp) == Sign::zero) {
         // H in the triangle's plane: it blocks something only when its
         // closure holds H (elsewhere in its plane it projects to a line).
         // Which side of edge (p, q) H lies on, in the plane: with H = E +
@@ -178,12 +190,31 @@ bool may_meet_pyramid(const std::array<Vec3, 3>& v, const LightPiece& piece,
 }
 
 struct PieceResult {
-  FT fraction{1};
+  double fraction = 1;
   bool in_plane = false;
+  bool certified = false;
 };
 
-PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, const SamplePoint& sp,
-                           const TrianglesAtH& triangles) {
+/// The exact H, made on first use: a certified fraction never needs it.
+class LazyH {
+ public:
+  explicit LazyH(std::function<P3()> make) : make_(std::move(make)) {}
+  const P3& get() {
+    if (!value_) value_ = make_();
+    return *value_;
+  }
+
+ private:
+  std::function<P3()> make_;
+  std::optional<P3> value_;
+};
+
+/// V of one piece, exactly, from the triangles that may block it.
+double exact_piece_fraction(const LightPiece& piece, const P3& h, const P3& d,
+                            const std::vector<std::vector<const TriangleAtH*>>& kept);
+
+PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, const SamplePoint& sp,
+                           const TrianglesAtH& triangles, FractionPrecision precision) {
   PieceResult result;
   const std::array<Vec3, 3>& f = piece.fan.front();
   const Sign h_side = orientation_at_hit(f[0], at(f[1]), at(f[2]), sp);
@@ -207,7 +238,28 @@ PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, co
     if (!these.empty()) kept.push_back(std::move(these));
   }
   if (kept.empty()) return result;  // nothing between H and the light: V = 1
+  if (precision == FractionPrecision::certified) {
+    std::vector<std::vector<BlockerTriangle>> blockers;
+    for (const std::vector<const TriangleAtH*>& polygon : kept) {
+      blockers.emplace_back();
+      for (const TriangleAtH* t : polygon)
+        blockers.back().push_back({t->v, t->touches, t->through});
+    }
+    if (const std::optional<double> v =
+            certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance)) {
+      result.fraction = *v;
+      result.certified = true;
+      return result;
+    }
+  }
+  result.fraction = exact_piece_fraction(piece, h.get(), exact(d), kept);
+  return result;
+}
 
+double exact_piece_fraction(const LightPiece& piece, const P3& h, const P3& d,
+                            const std::vector<std::vector<const TriangleAtH*>>& kept) {
+  const std::size_t m = piece.hull.size();
+  const std::array<Vec3, 3>& f = piece.fan.front();
   const LightPlane plane(f[0], f[1], f[2]);
   Pyramid pyramid{h, d, {}, {}, &plane, plane.height(h)};
   for (const Vec3& v : piece.hull) pyramid.base.push_back(exact(v));
@@ -258,7 +310,7 @@ PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, co
     }
     if (parts > 0) own.polygons_with_holes(std::back_inserter(multiples));
   }
-  if (singles.empty() && multiples.empty()) return result;
+  if (singles.empty() && multiples.empty()) return 1;
   if (piece.convex && singles.size() == 1 && multiples.empty()) {
     // One convex part over a convex light (the common penumbra of one
     // edge, a light straddling the receiver's plane): their intersection
@@ -266,9 +318,8 @@ PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, co
     std::vector<Point2> hull2;
     for (const Vec3& v : piece.hull) hull2.push_back(plane.project(v));
     Polygon2 region;
-    if (!convex_polygon(hull2, region)) return result;
-    result.fraction = FT(1) - ring_area(clip_convex(singles.front(), region)) / region.area();
-    return result;
+    if (!convex_polygon(hull2, region)) return 1;
+    return nearest_double(FT(1) - ring_area(clip_convex(singles.front(), region)) / region.area());
   }
   PolygonSet blocked;
   blocked.join(singles.begin(), singles.end(), multiples.begin(), multiples.end());
@@ -276,10 +327,9 @@ PieceResult piece_fraction(const LightPiece& piece, const P3& h, const P3& d, co
   const FT region_area = area_of(region);
   // No area, no weight (the loader refuses such lights; a Scene built in
   // code may still hold one): never a division by zero.
-  if (CGAL::is_zero(region_area)) return result;
+  if (CGAL::is_zero(region_area)) return 1;
   blocked.intersection(region);
-  result.fraction = FT(1) - area_of(blocked) / region_area;
-  return result;
+  return nearest_double(FT(1) - area_of(blocked) / region_area);
 }
 
 }  // namespace
@@ -294,7 +344,8 @@ bool area_light_has_area(std::span<const Vec3> vertices) {
 }
 
 VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
-                                 const SurfaceHit& hit, std::uint32_t light_index) {
+                                 const SurfaceHit& hit, std::uint32_t light_index,
+                                 FractionPrecision precision) {
   const Light& light = index.scene().lights.at(light_index);
   if (light.type != LightType::area)
     throw std::logic_error("visible_fraction: light " + std::to_string(light_index) +
@@ -302,28 +353,21 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   const HitTriangle tri = hit_triangle(index, hit);
   const SamplePoint sp{ray.origin, ray.direction, tri.a, tri.b, tri.c};
 
-  // Candidates: every polygon whose box comes within r of the segment from
-  // H to the light's centre c, r (`reach`) the light's largest coordinate distance
-  // from c. A point H + s·(y − H) of the pyramid (y on the light, s in
-  // [0, 1]) lies s·(y − c) from the segment's point H + s·(c − H), each
-  // coordinate within r: the pyramid lies in the segment's box widened by
-  // r, and a small light's candidates are those near its ray, not those in
-  // the box of H and the light (which held the whole model for many floor
-  // samples). The slack adds H's rounding and r's.
-  const double t = ray_plane_parameter(ray.origin, ray.direction, tri.a, tri.b, tri.c);
-  const Vec3 approx_h = ray.origin + t * ray.direction;
-  Vec3 centre{0, 0, 0};
-  for (const Vec3& v : light.vertices) centre = centre + v;
-  centre = centre * (1.0 / static_cast<double>(light.vertices.size()));
-  double reach = 0;
-  for (const Vec3& v : light.vertices) reach = std::max(reach, max_abs(v - centre));
-  const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) +
-                       reach * (1 + 1e-12) + 1e-300;
+  // Candidates: every polygon whose box may meet a pyramid from H over a
+  // piece of the light: the BVH's boxes tested against the pyramids' planes
+  // in doubles with a proven margin (pyramid_filter.h), so that a box is
+  // passed over only when it certainly lies outside one of them. A polygon
+  // holding H is always kept (H lies on every side, strictly inside the
+  // light's plane), so touching and flat-seam triangles are all seen.
+  const std::vector<LightPiece> pieces = light_pieces(light.vertices);
+  double magnitude = index.magnitude();
+  for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
+  const PyramidFilter filter(pieces, sp, magnitude);
   std::vector<std::uint32_t> candidates;
-  index.query_segment(approx_h, centre, false, slack, candidates);
+  index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
   std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
 
-  const TrianglesAtH triangles = triangles_at(index, candidates, sp, light.vertices);
+  const TrianglesAtH triangles = triangles_at(index, candidates, sp, hit, light.vertices, filter);
   // H = eye + t·d exactly, t = n·(a − eye) / n·d on the hit triangle's
   // plane: made only when something may block.
   const auto exact_h = [&] {
@@ -333,22 +377,20 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
     const P3 d = exact(ray.direction);
     return add(eye, scale(d, dot(n, sub(a, eye)) / dot(n, d)));
   };
-  std::optional<P3> h;
-  const P3 d = exact(ray.direction);
-  if (!triangles.polygons.empty()) h = exact_h();
+  LazyH h(exact_h);
 
   VisibleFraction answer;
   bool in_plane = false;
-  const std::vector<LightPiece> pieces = light_pieces(light.vertices);
   std::vector<double> fractions;
   for (const LightPiece& piece : pieces) {
     const PieceResult r =
         triangles.polygons.empty()
-            ? PieceResult{FT(1), orientation_at_hit(piece.fan[0][0], at(piece.fan[0][1]),
-                                                    at(piece.fan[0][2]), sp) == Sign::zero}
-            : piece_fraction(piece, *h, d, sp, triangles);
+            ? PieceResult{1, orientation_at_hit(piece.fan[0][0], at(piece.fan[0][1]),
+                                                at(piece.fan[0][2]), sp) == Sign::zero}
+            : piece_fraction(piece, h, ray.direction, sp, triangles, precision);
     in_plane = in_plane || r.in_plane;
-    fractions.push_back(nearest_double(r.fraction));
+    answer.certified = answer.certified || r.certified;
+    fractions.push_back(r.fraction);
   }
   // One piece: its fraction. Several: weighted by their areas, which are
   // made (exactly, then rounded) only where the fractions differ.
@@ -370,8 +412,7 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   if (in_plane || hit.grazes) {
     answer.boundary = true;
   } else if (at_edge) {
-    const P3 hh = h ? *h : exact_h();
-    answer.boundary = !flat_seam(triangles.touching, hh);
+    answer.boundary = !flat_seam(triangles.touching, h.get());
   }
   return answer;
 }

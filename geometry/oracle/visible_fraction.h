@@ -32,16 +32,35 @@ struct VisibleFraction {
   /// polygon that holds it, or H lies in the plane of the light (of one of
   /// its fan triangles).
   bool boundary = false;
+  /// Some piece's fraction came from the certified path (within
+  /// kCertifiedTolerance), not from the exact rational.
+  bool certified = false;
 };
 
 /// Whether an area light's polygon has a surface of nonzero area (its
 /// even-odd interior when planar, its fan triangles when not).
 bool area_light_has_area(std::span<const Vec3> vertices);
 
+/// How V is made where something blocks part of the light.
+enum class FractionPrecision {
+  /// The exact rational, rounded once: the truth (`--method exact`,
+  /// `validate`).
+  exact,
+  /// In floating point with a proven bound, within kCertifiedTolerance of
+  /// the exact V, which is made only where the bound is not met or a
+  /// blocker holds H (certified_fraction.h): the volume method.
+  certified,
+};
+
+/// The largest error of a certified V: far below a float AOV's rounding
+/// (6e-8) and the 1e-6 rule's tolerance.
+inline constexpr double kCertifiedTolerance = 1e-8;
+
 /// V(P) of area light `light` (an index into the scene's lights, which must
 /// be an area light) for the sample of `ray` whose first hit is `hit`.
 /// Thread-safe: every exact object is made by the call.
 VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
-                                 const SurfaceHit& hit, std::uint32_t light);
+                                 const SurfaceHit& hit, std::uint32_t light,
+                                 FractionPrecision precision = FractionPrecision::exact);
 
 }  // namespace umbra::geometry

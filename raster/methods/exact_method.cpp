@@ -35,7 +35,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
       set_surface(index, ray, *hit, sample);
       for (std::uint32_t l = 0; l < lights; ++l) {
         if (frame.is_soft(l)) {
-          decide_area_light(index, ray, *hit, l, l, sample);
+          decide_area_light(index, ray, *hit, l, l, geometry::FractionPrecision::exact, sample);
           continue;
         }
         sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;

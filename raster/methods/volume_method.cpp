@@ -228,9 +228,10 @@ Frame render_volume(const geometry::SceneIndex& index,
         for (std::size_t k = 0; k < sample.lights.size(); ++k) {
           const std::uint32_t l = sample.lights[k];
           if (frame.is_soft(l)) {
-            // Area lights: the exact visible fraction for now; the
-            // penumbra-only fast path is docs/soft-shadows.md's next step.
-            decide_area_light(index, ray, entry.hit, k, l, sample);
+            // Area lights: V per sample, certified in floating point
+            // (docs/soft-shadows.md, "The volume method's fraction").
+            decide_area_light(index, ray, entry.hit, k, l, geometry::FractionPrecision::certified,
+                              sample);
             continue;
           }
           if (eye.degenerate[l]) {
@@ -275,7 +276,7 @@ Frame render_volume(const geometry::SceneIndex& index,
       for (std::size_t k = 0; k < sample.lights.size(); ++k) {
         const std::uint32_t l = sample.lights[k];
         if (frame.is_soft(l)) {
-          decide_area_light(index, ray, *hit, k, l, sample);
+          decide_area_light(index, ray, *hit, k, l, geometry::FractionPrecision::certified, sample);
           continue;
         }
         if (out_of_range(scene.lights[l], ray, tri)) {

@@ -1,0 +1,48 @@
+#pragma once
+// Internal to geometry/oracle/: the visible fraction of one light piece in
+// floating point with a proven error bound (docs/soft-shadows.md, "The
+// volume method's fraction"): the same construction as the exact one
+// (visible_fraction.cpp) carried out in interval arithmetic, the covered
+// area by covered_area_sweep.h, so that the answer is within `tolerance` of
+// the exact V or there is no answer and the caller computes V exactly.
+//
+// Every decision the clipping takes (which side of a plane a corner lies
+// on) must be certain in intervals, else no answer. The projected corners'
+// interval midpoints stand for the true corners: moving each true edge
+// straight to its midpoints' edge changes the coverage only of points it
+// sweeps over, within √2·δ of the midpoints' edge (δ its ends' largest
+// error, interpolated along it), so the swap costs at most the area of
+// those neighbourhoods inside the light, which the bound adds. Edges of
+// neighbouring triangles that are one true segment (interval_clip.h's
+// Source) cancel exactly and cost nothing: on a mesh, only the silhouette
+// seen from H, the clip edges and the light's edges are left.
+#include <geometry/exact/predicates.h>
+#include <geometry/oracle/area_light_pieces.h>
+
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace umbra::geometry::soft {
+
+/// A casting fan triangle that may block: far from H (it blocks its
+/// central projection), or holding H in its closure (it blocks, in the
+/// limit, the light beyond its plane within the halfspaces of its edges
+/// through H: visible_fraction.cpp's blocked_by_touching_triangle).
+struct BlockerTriangle {
+  std::array<Vec3, 3> v;
+  bool touches = false;
+  std::array<bool, 3> through{false, false, false};  ///< edge (v[e], v[e+1]) holds H
+};
+
+/// The fraction of `piece` visible from H, the hit of `sp` on the plane of
+/// its hit triangle, given the triangles that may block it grouped by
+/// casting polygon (a polygon's surface is its fan triangles counted mod 2;
+/// a lone triangle is its own polygon). The answer is within `tolerance` of
+/// the exact fraction; nullopt when that cannot be shown.
+std::optional<double> certified_piece_fraction(const LightPiece& piece, const SamplePoint& sp,
+                                               std::span<const std::vector<BlockerTriangle>> polygons,
+                                               double tolerance);
+
+}  // namespace umbra::geometry::soft

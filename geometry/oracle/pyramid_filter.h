@@ -1,0 +1,52 @@
+#pragma once
+// Internal to geometry/oracle/: which triangles and boxes certainly miss
+// the pyramids from H over an area light's pieces, in plain doubles with a
+// proven margin, so that the visible fraction (visible_fraction.cpp) runs
+// its filtered predicates only on what may block.
+//
+// Each plane of a pyramid (through H and a hull edge, and the light's
+// plane) is made once a sample in intervals from an interval H: f(x) =
+// N·x − c with the true N, c inside the intervals. A corner x is certainly
+// outside when the double N̂·x − ĉ (N̂, ĉ the midpoints) is below −m, m
+// bounding both the midpoints' error, Σ rad(N_k)·|x_k| + rad(c), and the
+// rounding of the double evaluation, γ₄·(Σ|N̂_k·x_k| + |ĉ|), for every x
+// within the scene's magnitude. All corners of a triangle (or a box)
+// certainly outside one plane: it cannot meet the open pyramid, nor hold H
+// (which lies on every side and strictly inside the light's plane), which
+// is exactly what the exact tests would find.
+#include <geometry/box.h>
+#include <geometry/exact/predicates.h>
+#include <geometry/oracle/area_light_pieces.h>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace umbra::geometry::soft {
+
+class PyramidFilter {
+ public:
+  /// The pyramids from H (the hit of `sp`) over `pieces`; `magnitude`
+  /// bounds the absolute value of every coordinate that will be tested.
+  PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp, double magnitude);
+
+  /// True only when the triangle certainly misses every piece's pyramid.
+  bool misses(const std::array<Vec3, 3>& t) const;
+  /// True only when the box certainly misses every piece's pyramid.
+  bool misses(const Box& b) const;
+
+ private:
+  struct Plane {
+    Vec3 n;
+    double c = 0, margin = 0;
+    double value(const Vec3& x) const { return n.x * x.x + n.y * x.y + n.z * x.z - c; }
+  };
+  template <std::size_t K>
+  bool all_outside(const std::array<Vec3, K>& corners) const;
+
+  /// Per piece, its planes; a plane whose side could not be made certain
+  /// is left out (the filter only ever keeps more).
+  std::vector<std::vector<Plane>> pyramids_;
+};
+
+}  // namespace umbra::geometry::soft
