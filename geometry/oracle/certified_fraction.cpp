@@ -33,37 +33,47 @@ bool less(const Source& a, const Source& b) { return a.key() < b.key(); }
 /// add 0 to the count everywhere, two parity edges of one group flip it
 /// twice. What is left keeps its budget; what cancels needs none.
 void cancel(std::vector<Candidate>& candidates, std::vector<SweepEdge>& edges, double& budget) {
-  std::vector<std::size_t> keyed;
+  // Each keyed edge's key made once: kind, group, then its ends' sources
+  // in a fixed order (plane, a, b each), and which way it runs.
+  using Key = std::array<double, 16>;
+  const auto put = [](const Source& s, double* out) {
+    out[0] = s.plane;
+    out[1] = s.a.x, out[2] = s.a.y, out[3] = s.a.z;
+    out[4] = s.b.x, out[5] = s.b.y, out[6] = s.b.z;
+  };
+  thread_local std::vector<std::pair<Key, std::size_t>> keyed;
+  thread_local std::vector<int> direction;
+  keyed.clear();
+  direction.assign(candidates.size(), 0);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const Candidate& c = candidates[i];
-    if (c.p.known && c.q.known && c.edge.kind != EdgeKind::light) {
-      keyed.push_back(i);
-    } else {
+    if (!c.p.known || !c.q.known || c.edge.kind == EdgeKind::light) {
       edges.push_back(c.edge);
       budget += c.budget;
+      continue;
     }
-  }
-  const auto key = [&](std::size_t i) {
-    const Candidate& c = candidates[i];
     const bool forward = less(c.p, c.q);
-    return std::make_tuple(c.edge.kind, c.edge.group, (forward ? c.p : c.q).key(),
-                           (forward ? c.q : c.p).key());
-  };
-  std::sort(keyed.begin(), keyed.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+    Key key;
+    key[0] = static_cast<double>(c.edge.kind);
+    key[1] = c.edge.group;
+    put(forward ? c.p : c.q, &key[2]);
+    put(forward ? c.q : c.p, &key[9]);
+    direction[i] = forward ? 1 : -1;
+    keyed.push_back({key, i});
+  }
+  std::sort(keyed.begin(), keyed.end());
   for (std::size_t r = 0; r < keyed.size();) {
     std::size_t end = r;
-    while (end < keyed.size() && key(keyed[end]) == key(keyed[r])) ++end;
+    while (end < keyed.size() && keyed[end].first == keyed[r].first) ++end;
     // Counted: the net direction survives; parity: the count mod 2.
+    const bool parity = candidates[keyed[r].second].edge.kind == EdgeKind::parity;
     int net = 0;
-    for (std::size_t k = r; k < end; ++k) {
-      const Candidate& c = candidates[keyed[k]];
-      net += c.edge.kind == EdgeKind::parity ? 1 : (less(c.p, c.q) ? 1 : -1);
-    }
-    const bool parity = candidates[keyed[r]].edge.kind == EdgeKind::parity;
-    std::size_t keep = parity ? static_cast<std::size_t>(net % 2) : static_cast<std::size_t>(std::abs(net));
+    for (std::size_t k = r; k < end; ++k) net += parity ? 1 : direction[keyed[k].second];
+    std::size_t keep =
+        parity ? static_cast<std::size_t>(net % 2) : static_cast<std::size_t>(std::abs(net));
     for (std::size_t k = r; k < end && keep > 0; ++k) {
-      const Candidate& c = candidates[keyed[k]];
-      if (!parity && (less(c.p, c.q) ? 1 : -1) * net < 0) continue;
+      const Candidate& c = candidates[keyed[k].second];
+      if (!parity && direction[keyed[k].second] * net < 0) continue;
       edges.push_back(c.edge);
       budget += c.budget;
       --keep;
@@ -137,9 +147,9 @@ double neighbourhood_area(const Corner& p, const Corner& q, const Box2& box) {
 
 }  // namespace
 
-std::optional<double> certified_piece_fraction(const LightPiece& piece, const SamplePoint& sp,
-                                               std::span<const std::vector<BlockerTriangle>> polygons,
-                                               double tolerance) {
+std::optional<double> certified_piece_fraction(
+    const LightPiece& piece, const SamplePoint& sp,
+    std::span<const std::vector<BlockerTriangle>> polygons, double tolerance) {
   CGAL::Protect_FPU_rounding<true> guard;
   // H on the hit triangle's plane: eye + t·d, t = n·(a − eye) / n·d.
   const IPoint a = ip(sp.hit0);
@@ -209,8 +219,13 @@ std::optional<double> certified_piece_fraction(const LightPiece& piece, const Sa
   // The pyramid's own sides, for checking that a near plane left its tip
   // alone; made when first needed, empty when a side is not certain.
   std::optional<std::vector<IHalfspace>> own_sides;
-  const auto tip_missed = [&](std::vector<IPoint> cut, std::vector<Source> cut_source,
-                              const IHalfspace& near, const std::array<Vec3, 3>& t) {
+  thread_local std::vector<IPoint> cut;
+  thread_local std::vector<Source> cut_source;
+  const auto tip_missed = [&](const std::vector<IPoint>& polygon_now,
+                              const std::vector<Source>& source_now, const IHalfspace& near,
+                              const std::array<Vec3, 3>& t) {
+    cut = polygon_now;
+    cut_source = source_now;
     // The part near H of the plane (the clip dropped it): certainly outside
     // one side of the pyramid, or behind H's plane parallel to the light.
     const IHalfspace keep_near{near.normal, near.offset, -near.sign};
@@ -273,13 +288,17 @@ std::optional<double> certified_piece_fraction(const LightPiece& piece, const Sa
       lv = std::min(lv, c[v]);
       hv = std::max(hv, c[v]);
     }
-  std::vector<Candidate> candidates;
+  // Per-thread scratch: this runs once a penumbra sample.
+  thread_local std::vector<Candidate> candidates;
+  thread_local std::vector<IPoint> polygon;
+  thread_local std::vector<Source> source;
+  thread_local std::vector<Corner> ring;
+  thread_local std::vector<std::pair<Interval, Interval>> exact_ring;
+  thread_local std::vector<SweepEdge> edges;
+  candidates.clear();
+  edges.clear();
   double budget = 0;  // area the midpoints' edges may miscount
   std::uint32_t groups = 1;
-  std::vector<IPoint> polygon;
-  std::vector<Source> source;
-  std::vector<Corner> ring;
-  std::vector<std::pair<Interval, Interval>> exact_ring;
   for (const std::vector<BlockerTriangle>& blocker : polygons) {
     const bool parity = blocker.size() > 1;
     const std::uint32_t group = parity ? groups++ : 0;
@@ -339,7 +358,8 @@ std::optional<double> certified_piece_fraction(const LightPiece& piece, const Sa
           } else {
             if (!make_wide_sides()) return std::nullopt;
             for (std::size_t side = 0; side < m && polygon.size() >= 3; ++side)
-              if (!clip(polygon, source, (*wide_sides)[side], kFirstSide + static_cast<int>(side), t))
+              if (!clip(polygon, source, (*wide_sides)[side], kFirstSide + static_cast<int>(side),
+                        t))
                 return std::nullopt;
           }
           if (polygon.size() < 3) continue;
@@ -387,7 +407,6 @@ std::optional<double> certified_piece_fraction(const LightPiece& piece, const Sa
       }
     }
   }
-  std::vector<SweepEdge> edges;
   cancel(candidates, edges, budget);
   // The light's region: its fan triangles' edges by parity, exact doubles.
   for (const std::array<Vec3, 3>& t : piece.fan)

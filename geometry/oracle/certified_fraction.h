@@ -41,8 +41,8 @@ struct BlockerTriangle {
 /// casting polygon (a polygon's surface is its fan triangles counted mod 2;
 /// a lone triangle is its own polygon). The answer is within `tolerance` of
 /// the exact fraction; nullopt when that cannot be shown.
-std::optional<double> certified_piece_fraction(const LightPiece& piece, const SamplePoint& sp,
-                                               std::span<const std::vector<BlockerTriangle>> polygons,
-                                               double tolerance);
+std::optional<double> certified_piece_fraction(
+    const LightPiece& piece, const SamplePoint& sp,
+    std::span<const std::vector<BlockerTriangle>> polygons, double tolerance);
 
 }  // namespace umbra::geometry::soft

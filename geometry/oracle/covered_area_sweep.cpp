@@ -55,8 +55,19 @@ bool crossing(const Span& s, const Span& t, Event& out) {
 
 /// Every endpoint x and every proper crossing, merged into clusters of
 /// overlapping intervals, sorted.
-std::vector<Event> clusters_of(const std::vector<Span>& spans, std::span<const SweepEdge> edges) {
-  std::vector<Event> events;
+/// Per-thread scratch: the sweep runs once a penumbra sample, and fresh
+/// vectors cost as much as the sweep on the small edge sets it sees.
+template <class T>
+std::vector<T>& scratch() {
+  thread_local std::vector<T> v;
+  v.clear();
+  return v;
+}
+
+const std::vector<Event>& clusters_of(const std::vector<Span>& spans,
+                                      std::span<const SweepEdge> edges) {
+  thread_local std::vector<Event> events;
+  events.clear();
   events.reserve(2 * edges.size());
   for (const SweepEdge& e : edges) {
     events.push_back({e.x0, e.x0});
@@ -75,7 +86,8 @@ std::vector<Event> clusters_of(const std::vector<Span>& spans, std::span<const S
   }
   std::sort(events.begin(), events.end(),
             [](const Event& a, const Event& b) { return a.lo < b.lo; });
-  std::vector<Event> merged;
+  thread_local std::vector<Event> merged;
+  merged.clear();
   for (const Event& e : events) {
     if (!merged.empty() && e.lo <= merged.back().hi)
       merged.back().hi = std::max(merged.back().hi, e.hi);
@@ -88,7 +100,7 @@ std::vector<Event> clusters_of(const std::vector<Span>& spans, std::span<const S
 }  // namespace
 
 SweepAreas covered_area(std::span<const SweepEdge> edges, std::uint32_t groups, double height) {
-  std::vector<Span> spans;
+  std::vector<Span>& spans = scratch<Span>();
   spans.reserve(edges.size());
   for (const SweepEdge& e : edges) {
     if (e.x0 == e.x1) continue;  // vertical: its x is an event, it spans no slab
@@ -100,7 +112,7 @@ SweepAreas covered_area(std::span<const SweepEdge> edges, std::uint32_t groups, 
       spans.push_back({e.x1, e.y1, e.x0, e.y0, e.kind, delta, e.group});
   }
   std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.xa < b.xa; });
-  const std::vector<Event> clusters = clusters_of(spans, edges);
+  const std::vector<Event>& clusters = clusters_of(spans, edges);
 
   // Only the light's box can hold covered area or light: slabs and
   // clusters are cut to its x-range, and an edge's error counts only where
@@ -117,9 +129,10 @@ SweepAreas covered_area(std::span<const SweepEdge> edges, std::uint32_t groups, 
     return std::max(0.0, (Interval(std::min(hi, hu)) - std::max(lo, lu)).sup());
   };
   SweepAreas areas{Interval(0), Interval(0)};
-  std::vector<std::uint8_t> odd(groups, 0);
-  std::vector<std::size_t> active;
-  std::vector<std::pair<double, std::size_t>> order;
+  std::vector<std::uint8_t>& odd = scratch<std::uint8_t>();
+  odd.assign(groups, 0);
+  std::vector<std::size_t>& active = scratch<std::size_t>();
+  std::vector<std::pair<double, std::size_t>>& order = scratch<std::pair<double, std::size_t>>();
   std::size_t next = 0;
   for (std::size_t k = 0; k < clusters.size(); ++k) {
     // A cluster of width w: no more than w × height of either area.
@@ -144,8 +157,8 @@ SweepAreas covered_area(std::span<const SweepEdge> edges, std::uint32_t groups, 
     double radius = 0;
     for (std::size_t i : active) {
       const Span& s = spans[i];
-      const Interval y =
-          Interval(s.ya) + (Interval(m) - s.xa) * ((Interval(s.yb) - s.ya) / (Interval(s.xb) - s.xa));
+      const Interval y = Interval(s.ya) +
+                         (Interval(m) - s.xa) * ((Interval(s.yb) - s.ya) / (Interval(s.xb) - s.xa));
       order.push_back({y.inf() / 2 + y.sup() / 2, i});
       // The diameter bounds the midpoint's error; only where the y may lie
       // in the light's range can moving it change what is covered.

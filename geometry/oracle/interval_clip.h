@@ -69,8 +69,8 @@ struct Source {
 
 /// The sources of a triangle's corners: corner i lies on edges i − 1 and i.
 inline std::vector<Source> corner_sources(const std::array<Vec3, 3>& t) {
-  return {{-1, t[0], t[0], true, 0b101}, {-1, t[1], t[1], true, 0b011},
-          {-1, t[2], t[2], true, 0b110}};
+  return {
+      {-1, t[0], t[0], true, 0b101}, {-1, t[1], t[1], true, 0b011}, {-1, t[2], t[2], true, 0b110}};
 }
 
 /// Sutherland–Hodgman against the closed halfspace h, each corner's side
@@ -79,7 +79,7 @@ inline std::vector<Source> corner_sources(const std::array<Vec3, 3>& t) {
 /// sources of the corners it makes. A new corner is made from its edge's
 /// two ends in one order whichever way the polygon runs, so that
 /// neighbours sharing the edge make the same intervals.
-bool clip(std::vector<IPoint>& polygon, std::vector<Source>& source, const IHalfspace& h,
-          int plane, const std::array<Vec3, 3>& t);
+bool clip(std::vector<IPoint>& polygon, std::vector<Source>& source, const IHalfspace& h, int plane,
+          const std::array<Vec3, 3>& t);
 
 }  // namespace umbra::geometry::soft

@@ -85,11 +85,21 @@ bool PyramidFilter::all_outside(const std::array<Vec3, K>& corners) const {
 bool PyramidFilter::misses(const std::array<Vec3, 3>& t) const { return all_outside(t); }
 
 bool PyramidFilter::misses(const Box& b) const {
-  const std::array<Vec3, 8> corners{
-      Vec3{b.lo.x, b.lo.y, b.lo.z}, Vec3{b.hi.x, b.lo.y, b.lo.z}, Vec3{b.lo.x, b.hi.y, b.lo.z},
-      Vec3{b.hi.x, b.hi.y, b.lo.z}, Vec3{b.lo.x, b.lo.y, b.hi.z}, Vec3{b.hi.x, b.lo.y, b.hi.z},
-      Vec3{b.lo.x, b.hi.y, b.hi.z}, Vec3{b.hi.x, b.hi.y, b.hi.z}};
-  return all_outside(corners);
+  // All eight corners outside a plane when the one farthest along its
+  // normal is: that corner's value is computed as every corner's would be.
+  for (const std::vector<Plane>& planes : pyramids_) {
+    bool missed = false;
+    for (const Plane& p : planes) {
+      const Vec3 far{p.n.x > 0 ? b.hi.x : b.lo.x, p.n.y > 0 ? b.hi.y : b.lo.y,
+                     p.n.z > 0 ? b.hi.z : b.lo.z};
+      if (p.value(far) < -p.margin) {
+        missed = true;
+        break;
+      }
+    }
+    if (!missed) return false;
+  }
+  return true;
 }
 
 }  // namespace umbra::geometry::soft

@@ -225,7 +225,11 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
   // The pyramid's side through H, hull[i] and hull[i+1] has the hull's
   // next corner strictly inside (H is off the plane, the corners are not
   // collinear).
-  const std::size_t m = piece.hull.size();
+  // The certified path takes every triangle the pyramid filter kept: the
+  // exact test below differs from it only within the filter's margin of a
+  // pyramid's plane, and the clipping sorts those out either way.
+  const bool all = precision == FractionPrecision::certified;
+  const std::size_t m = all ? 0 : piece.hull.size();
   std::vector<Sign> inner(m);
   for (std::size_t i = 0; i < m; ++i)
     inner[i] = orientation_at_hit(piece.hull[i], at(piece.hull[(i + 1) % m]),
@@ -234,7 +238,7 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
   for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
     std::vector<const TriangleAtH*> these;
     for (const TriangleAtH& t : polygon)
-      if (t.touches || may_meet_pyramid(t.v, piece, inner, h_side, sp)) these.push_back(&t);
+      if (all || t.touches || may_meet_pyramid(t.v, piece, inner, h_side, sp)) these.push_back(&t);
     if (!these.empty()) kept.push_back(std::move(these));
   }
   if (kept.empty()) return result;  // nothing between H and the light: V = 1
@@ -359,7 +363,14 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   // passed over only when it certainly lies outside one of them. A polygon
   // holding H is always kept (H lies on every side, strictly inside the
   // light's plane), so touching and flat-seam triangles are all seen.
-  const std::vector<LightPiece> pieces = light_pieces(light.vertices);
+  // The light's pieces, made once a thread for the light it last saw:
+  // consecutive samples ask about the same light.
+  thread_local std::vector<Vec3> pieces_of;
+  thread_local std::vector<LightPiece> pieces;
+  if (pieces.empty() || pieces_of != light.vertices) {
+    pieces = light_pieces(light.vertices);
+    pieces_of = light.vertices;
+  }
   double magnitude = index.magnitude();
   for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
   const PyramidFilter filter(pieces, sp, magnitude);

@@ -38,7 +38,8 @@ std::vector<SweepEdge> unit_square_light() {
 
 /// A counter-clockwise triangle's counted edges (or a parity group's).
 void add_triangle(std::vector<SweepEdge>& edges, double ax, double ay, double bx, double by,
-                  double cx, double cy, EdgeKind kind = EdgeKind::counted, std::uint32_t group = 0) {
+                  double cx, double cy, EdgeKind kind = EdgeKind::counted,
+                  std::uint32_t group = 0) {
   edges.push_back({ax, ay, bx, by, kind, group});
   edges.push_back({bx, by, cx, cy, kind, group});
   edges.push_back({cx, cy, ax, ay, kind, group});
@@ -175,7 +176,8 @@ TEST(CertifiedFraction, AgreesWithTheExactFractionOnRandomMeshesAndPolygons) {
     for (int sample = 0; sample < 60; ++sample) {
       const Vec3 eye{grid(rng, -4, 4, 64), grid(rng, 0.25, 7, 64), grid(rng, -4, 4, 64)};
       const Vec3 target{grid(rng, -3, 3, 64), grid(rng, 0, 2.5, 64), grid(rng, -3, 3, 64)};
-      for (std::uint32_t l = 0; l < lights.size(); ++l) compare(index, {eye, target - eye}, l, seen);
+      for (std::uint32_t l = 0; l < lights.size(); ++l)
+        compare(index, {eye, target - eye}, l, seen);
     }
   }
   EXPECT_GE(seen.samples, 500);   // 748 with this seed
@@ -192,10 +194,12 @@ TEST(CertifiedFraction, AgreesAtContactAndAlongOccludersEdges) {
   // box's foot and the ramp's base; samples on the box's sides and top and
   // on the ramp.
   std::vector<Model> models{floor_model(), square(-0.5, 0.5, -0.5, 0.5, 1)};
-  models.push_back(polygon_model({{-0.5, 0, -0.5}, {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 0, -0.5}}));
+  models.push_back(
+      polygon_model({{-0.5, 0, -0.5}, {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 0, -0.5}}));
   models.push_back(polygon_model({{-0.5, 0, 0.5}, {0.5, 0, 0.5}, {0.5, 1, 0.5}, {-0.5, 1, 0.5}}));
   models.push_back(polygon_model({{0.5, 0, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5}, {0.5, 0, 0.5}}));
-  models.push_back(polygon_model({{-0.5, 0, -0.5}, {-0.5, 0, 0.5}, {-0.5, 1, 0.5}, {-0.5, 1, -0.5}}));
+  models.push_back(
+      polygon_model({{-0.5, 0, -0.5}, {-0.5, 0, 0.5}, {-0.5, 1, 0.5}, {-0.5, 1, -0.5}}));
   // The ramp: from the floor at x = 1 up to y = 0.5 at x = 3.
   models.push_back(polygon_model({{1, 0, -1}, {3, 0.5, -1}, {3, 0.5, 1}, {1, 0, 1}}));
   const std::vector<Light> lights{
@@ -209,10 +213,10 @@ TEST(CertifiedFraction, AgreesAtContactAndAlongOccludersEdges) {
   for (const double ulps : {0.0, 1.0, 4.0, 1e3, 1e9}) {
     const double off = ulps * std::numeric_limits<double>::epsilon();
     for (const double along : {-0.375, 0.0, 0.25}) {
-      const std::vector<Vec3> targets{
-          {0.5 + off, 0, along},  {along, 0, 0.5 + off},  {1 - off, 0, along},
-          {0.5, 0.5, along},      {along, 1, along},      {2, 0.25 + off, along},
-          {-0.5 - off, 0, along}, {along, 1 - off, 0.5}};
+      const std::vector<Vec3> targets{{0.5 + off, 0, along},  {along, 0, 0.5 + off},
+                                      {1 - off, 0, along},    {0.5, 0.5, along},
+                                      {along, 1, along},      {2, 0.25 + off, along},
+                                      {-0.5 - off, 0, along}, {along, 1 - off, 0.5}};
       for (const Vec3& target : targets)
         for (std::uint32_t l = 0; l < lights.size(); ++l)
           compare(index, {eye, target - eye}, l, seen);
@@ -273,8 +277,8 @@ TEST(PyramidFilter, PassesOverOnlyTrianglesOutsideAPlaneOfThePyramid) {
     for (std::size_t i = 0; i < m; ++i)
       inner[i] = orientation_at_hit(hull[i], HPoint::point(hull[(i + 1) % m]),
                                     HPoint::point(hull[(i + 2) % m]), sp);
-    const Sign h_side = orientation_at_hit(light[0], HPoint::point(light[1]),
-                                           HPoint::point(light[2]), sp);
+    const Sign h_side =
+        orientation_at_hit(light[0], HPoint::point(light[1]), HPoint::point(light[2]), sp);
     for (int k = 0; k < 1000; ++k) {
       const std::size_t i = static_cast<std::size_t>(k) % m;
       std::array<Vec3, 3> tri;
@@ -294,7 +298,7 @@ TEST(PyramidFilter, PassesOverOnlyTrianglesOutsideAPlaneOfThePyramid) {
         bool all = true;
         for (const Vec3& x : tri)
           all = all && orientation_at_hit(hull[side], HPoint::point(hull[(side + 1) % m]),
-                                           HPoint::point(x), sp) == -inner[side];
+                                          HPoint::point(x), sp) == -inner[side];
         outside = all;
       }
       bool beyond = true;
