@@ -3,7 +3,9 @@
 #include <geometry/oracle/interval_clip.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <tuple>
 
@@ -41,8 +43,10 @@ void cancel(std::vector<Candidate>& candidates, std::vector<SweepEdge>& edges, d
     out[1] = s.a.x, out[2] = s.a.y, out[3] = s.a.z;
     out[4] = s.b.x, out[5] = s.b.y, out[6] = s.b.z;
   };
-  thread_local std::vector<std::pair<Key, std::size_t>> keyed;
+  thread_local std::vector<Key> keys;
+  thread_local std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;  // hash, index
   thread_local std::vector<int> direction;
+  keys.clear();
   keyed.clear();
   direction.assign(candidates.size(), 0);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -50,6 +54,7 @@ void cancel(std::vector<Candidate>& candidates, std::vector<SweepEdge>& edges, d
     if (!c.p.known || !c.q.known || c.edge.kind == EdgeKind::light) {
       edges.push_back(c.edge);
       budget += c.budget;
+      keys.emplace_back();
       continue;
     }
     const bool forward = less(c.p, c.q);
@@ -59,24 +64,46 @@ void cancel(std::vector<Candidate>& candidates, std::vector<SweepEdge>& edges, d
     put(forward ? c.p : c.q, &key[2]);
     put(forward ? c.q : c.p, &key[9]);
     direction[i] = forward ? 1 : -1;
-    keyed.push_back({key, i});
+    // Sorted by a hash of the key (FNV-1a over its bits), equal keys
+    // grouped within a run of equal hashes: a sort of 12-byte entries, not
+    // of 136-byte ones.
+    std::uint64_t hash = 14695981039346656037ull;
+    for (double x : key) {
+      hash ^= std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x);  // +0 and -0 alike
+      hash *= 1099511628211ull;
+    }
+    keys.push_back(key);
+    keyed.push_back({hash, static_cast<std::uint32_t>(i)});
   }
   std::sort(keyed.begin(), keyed.end());
+  thread_local std::vector<std::uint32_t> run;
   for (std::size_t r = 0; r < keyed.size();) {
     std::size_t end = r;
     while (end < keyed.size() && keyed[end].first == keyed[r].first) ++end;
-    // Counted: the net direction survives; parity: the count mod 2.
-    const bool parity = candidates[keyed[r].second].edge.kind == EdgeKind::parity;
-    int net = 0;
-    for (std::size_t k = r; k < end; ++k) net += parity ? 1 : direction[keyed[k].second];
-    std::size_t keep =
-        parity ? static_cast<std::size_t>(net % 2) : static_cast<std::size_t>(std::abs(net));
-    for (std::size_t k = r; k < end && keep > 0; ++k) {
-      const Candidate& c = candidates[keyed[k].second];
-      if (!parity && direction[keyed[k].second] * net < 0) continue;
-      edges.push_back(c.edge);
-      budget += c.budget;
-      --keep;
+    run.clear();
+    for (std::size_t k = r; k < end; ++k) run.push_back(keyed[k].second);
+    // Within the run, one group per distinct key (nearly always one).
+    while (!run.empty()) {
+      const Key& key = keys[run.front()];
+      const bool parity = candidates[run.front()].edge.kind == EdgeKind::parity;
+      int net = 0;
+      for (std::uint32_t i : run)
+        if (keys[i] == key) net += parity ? 1 : direction[i];
+      // Counted: the net direction survives; parity: the count mod 2.
+      std::size_t keep =
+          parity ? static_cast<std::size_t>(net % 2) : static_cast<std::size_t>(std::abs(net));
+      std::size_t kept_end = 0;
+      for (std::uint32_t i : run) {
+        if (keys[i] != key) {
+          run[kept_end++] = i;  // another key: the next group
+          continue;
+        }
+        if (keep == 0 || (!parity && direction[i] * net < 0)) continue;
+        edges.push_back(candidates[i].edge);
+        budget += candidates[i].budget;
+        --keep;
+      }
+      run.resize(kept_end);
     }
     r = end;
   }

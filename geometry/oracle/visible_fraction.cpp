@@ -222,32 +222,14 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
     result.in_plane = true;  // counted apart; V taken as 1 there
     return result;
   }
-  // The pyramid's side through H, hull[i] and hull[i+1] has the hull's
-  // next corner strictly inside (H is off the plane, the corners are not
-  // collinear).
-  // The certified path takes every triangle the pyramid filter kept: the
-  // exact test below differs from it only within the filter's margin of a
-  // pyramid's plane, and the clipping sorts those out either way.
-  const bool all = precision == FractionPrecision::certified;
-  const std::size_t m = all ? 0 : piece.hull.size();
-  std::vector<Sign> inner(m);
-  for (std::size_t i = 0; i < m; ++i)
-    inner[i] = orientation_at_hit(piece.hull[i], at(piece.hull[(i + 1) % m]),
-                                  at(piece.hull[(i + 2) % m]), sp);
-  std::vector<std::vector<const TriangleAtH*>> kept;
-  for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
-    std::vector<const TriangleAtH*> these;
-    for (const TriangleAtH& t : polygon)
-      if (all || t.touches || may_meet_pyramid(t.v, piece, inner, h_side, sp)) these.push_back(&t);
-    if (!these.empty()) kept.push_back(std::move(these));
-  }
-  if (kept.empty()) return result;  // nothing between H and the light: V = 1
+  // The certified path takes every triangle the pyramid filter kept (the
+  // exact may-meet test differs from it only within the filter's margin of
+  // a pyramid's plane, and the clipping sorts those out either way).
   if (precision == FractionPrecision::certified) {
     std::vector<std::vector<BlockerTriangle>> blockers;
-    for (const std::vector<const TriangleAtH*>& polygon : kept) {
+    for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
       blockers.emplace_back();
-      for (const TriangleAtH* t : polygon)
-        blockers.back().push_back({t->v, t->touches, t->through});
+      for (const TriangleAtH& t : polygon) blockers.back().push_back({t.v, t.touches, t.through});
     }
     if (const std::optional<double> v =
             certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance)) {
@@ -256,6 +238,22 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
       return result;
     }
   }
+  // The pyramid's side through H, hull[i] and hull[i+1] has the hull's
+  // next corner strictly inside (H is off the plane, the corners are not
+  // collinear).
+  const std::size_t m = piece.hull.size();
+  std::vector<Sign> inner(m);
+  for (std::size_t i = 0; i < m; ++i)
+    inner[i] = orientation_at_hit(piece.hull[i], at(piece.hull[(i + 1) % m]),
+                                  at(piece.hull[(i + 2) % m]), sp);
+  std::vector<std::vector<const TriangleAtH*>> kept;
+  for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
+    std::vector<const TriangleAtH*> these;
+    for (const TriangleAtH& t : polygon)
+      if (t.touches || may_meet_pyramid(t.v, piece, inner, h_side, sp)) these.push_back(&t);
+    if (!these.empty()) kept.push_back(std::move(these));
+  }
+  if (kept.empty()) return result;  // nothing between H and the light: V = 1
   result.fraction = exact_piece_fraction(piece, h.get(), exact(d), kept);
   return result;
 }
