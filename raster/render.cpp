@@ -63,14 +63,6 @@ Frame render_linear(const geometry::Scene& scene, const RenderOptions& options,
              (options.rows ? options.rows->size() : scene.camera.height);
   if (!options.shadows && options.method != Method::volume)
     throw std::invalid_argument("render: shadows can only be turned off for Method::volume");
-  if (options.method == Method::map)
-    for (std::size_t l = 0; l < scene.lights.size(); ++l)
-      if (scene.lights[l].type == geometry::LightType::area)
-        throw util::InputError(
-            scene.source.empty() ? "render" : scene.source.string(),
-            fmt::format("light {} is an area light, which --method map does not render yet; use "
-                        "--method volume, exact or ray",
-                        l));
   Frame frame;
   switch (options.method) {
     case Method::exact:

@@ -2,10 +2,11 @@
 # Issue 21's speed table for area lights: bunny00 and refined_elephant on a
 # floor (the render benchmark's scenes), 1280x720, under one square area
 # light of side a tenth of the model's size, horizontal, centred where the
-# benchmark's single point light is. Times the volume method (today the
-# exact visible fraction at every sample), the hard frame of a point light
-# at the light's centre, and Embree with N = 16, 64, 256, 1024 light
-# samples; scores each against the exact V on 20,000 seeded samples.
+# benchmark's single point light is. Times the volume method (the
+# certified visible fraction), the hard frame of a point light at the
+# light's centre, Embree with N = 16, 64, 256, 1024 light samples and the
+# map method's PCSS; scores each against the exact V on 20,000 seeded
+# samples.
 #
 #   scripts/area-light-bench.sh [OUT_DIR] [THREADS]
 #
@@ -49,7 +50,9 @@ PY
     run "area light, ray N=$n" "$umbra" render "$out/$model-area.json" --threads "$threads" -q \
       --method ray --area-samples "$n" -o "$out/$model-ray$n.exr"
   done
-  for image in volume ray16 ray64 ray256 ray1024; do
+  run "area light, map (PCSS)" "$umbra" render "$out/$model-area.json" --threads "$threads" -q \
+    --method map -o "$out/$model-pcss.exr"
+  for image in volume ray16 ray64 ray256 ray1024 pcss; do
     # Exit 1 is expected for the sampled methods: their penumbra errs.
     run "validate $image on 20000 samples (the exact V)" "$umbra" validate \
       "$out/$model-area.json" --image "$out/$model-$image.exr" --samples 20000 \

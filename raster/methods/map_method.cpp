@@ -1,6 +1,8 @@
-// Method::map: Williams' shadow maps (1978). The visible surface is the
-// volume method's (scanline, exact first hit wherever the scanline is
-// unsure), so every error of this method is in the shadow decision alone:
+// Method::map: Williams' shadow maps (1978), and for area lights PCSS
+// (Fernando 2005) on a cube of depth views at the light's centroid
+// (shadow_lookup.h). The visible surface is the volume method's (scanline,
+// exact first hit wherever the scanline is unsure), so every error of this
+// method is in the shadow decision alone:
 //   1. visible pass: per pixel the visible sample, then per light what needs
 //      no map (out of range, exact; the attached shadow of a surface turned
 //      away from the light, exact) and, for the rest, which view it reads;
@@ -22,6 +24,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -61,12 +64,18 @@ void check_options(const ShadowMapOptions& o) {
 /// surface; a real-time renderer gets the same from n·l <= 0.
 bool faces_away(const geometry::Light& light, const Vec3& eye, const geometry::HitTriangle& tri) {
   using geometry::HPoint;
+  const geometry::Sign at_eye = geometry::orientation(tri.a, tri.b, tri.c, eye);
+  if (light.type == geometry::LightType::area) {
+    // Every vertex of the light strictly behind: none of it is seen.
+    for (const Vec3& v : light.vertices)
+      if (geometry::orientation(tri.a, tri.b, tri.c, v) != -at_eye) return false;
+    return at_eye != geometry::Sign::zero;
+  }
   const geometry::Sign at_light =
       light.type == geometry::LightType::point
           ? geometry::orientation(tri.a, tri.b, tri.c, light.position)
           : geometry::orientation(tri.a, HPoint::point(tri.b), HPoint::point(tri.c),
                                   HPoint::at_infinity(-light.direction));
-  const geometry::Sign at_eye = geometry::orientation(tri.a, tri.b, tri.c, eye);
   return at_light != geometry::Sign::zero && at_light == -at_eye;
 }
 
@@ -81,8 +90,27 @@ std::vector<Occluder> occluders_of(const geometry::SceneIndex& index, const Surf
 }
 
 /// Filter taps, bilinear neighbours and dither reach at most this far past
-/// the texel a sample falls in.
-int view_margin(const ShadowMapOptions& o) { return o.pcf / 2 + 2; }
+/// the texel a sample falls in (PCSS's taps, for an area light's views).
+int view_margin(const ShadowMapOptions& o, const geometry::Light& light) {
+  return light.type == geometry::LightType::area ? kPcssMaxRadius + 2 : o.pcf / 2 + 2;
+}
+
+/// Where an area light's depth views look from: the centroid of its
+/// vertices; and the radius of the disc of its area, PCSS's light size.
+Vec3 light_centre(const geometry::Light& light) {
+  Vec3 c{0, 0, 0};
+  for (const Vec3& v : light.vertices) c = c + v;
+  return c * (1.0 / static_cast<double>(light.vertices.size()));
+}
+double disc_radius(const geometry::Light& light) {
+  // The fan's vector area, |Σ (v_k − v_0) × (v_k+1 − v_0)| / 2: the area of
+  // a planar polygon (its projection's, for a non-planar one).
+  Vec3 sum{0, 0, 0};
+  const std::vector<Vec3>& v = light.vertices;
+  for (std::size_t k = 1; k + 1 < v.size(); ++k)
+    sum = sum + geometry::cross(v[k] - v[0], v[k + 1] - v[0]);
+  return std::sqrt(geometry::length(sum) / 2 / std::numbers::pi);
+}
 
 }  // namespace
 
@@ -116,6 +144,10 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   std::vector<std::atomic<std::uint32_t>> needed(lights);
   std::atomic<std::uint64_t> fallbacks{0};
   Frame frame(camera.width, camera.height, lights, options.threads);
+  frame.soft = soft_lights(scene);
+  std::vector<double> radius(lights, 0);
+  for (std::size_t l = 0; l < lights; ++l)
+    if (scene.lights[l].type == geometry::LightType::area) radius[l] = disc_radius(scene.lights[l]);
   progress.phase("visible", static_cast<std::uint64_t>(rows.size()));
   for_each_row(rows, options.threads, [&](int j) {
     std::vector<std::uint32_t> row_needed(lights, 0);
@@ -151,15 +183,17 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       for (std::uint32_t l = 0; l < lights; ++l) {
         const geometry::Light& light = scene.lights[l];
         Decided& d = decided[pixel * lights + l];
-        if (entry_id ? spheres.out_of_range(*entry_id, l, light, ray, tri)
-                     : out_of_range(light, ray, tri)) {
+        const bool area = light.type == geometry::LightType::area;
+        if (!area && (entry_id ? spheres.out_of_range(*entry_id, l, light, ray, tri)
+                               : out_of_range(light, ray, tri))) {
           d = Decided::out_of_range;
         } else if (casts && faces_away(light, ray.origin, tri)) {
           d = Decided::shadowed;
         } else {
           d = Decided::lookup;
-          const int f =
-              light.type == geometry::LightType::point ? cube_face(point - light.position) : 0;
+          const int f = light.type == geometry::LightType::point ? cube_face(point - light.position)
+                        : area ? cube_face(point - light_centre(light))
+                               : 0;
           face[pixel * lights + l] = static_cast<std::uint8_t>(f);
           row_needed[l] |= 1u << f;
         }
@@ -184,11 +218,13 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   progress.phase("shadow maps", views_to_build);
   for (std::size_t l = 0; l < lights; ++l) {
     const geometry::Light& light = scene.lights[l];
-    if (light.type == geometry::LightType::point) {
-      const auto cube = cube_views(light.position, mo.resolution, view_margin(mo), near);
+    if (light.type == geometry::LightType::point || light.type == geometry::LightType::area) {
+      const Vec3 from =
+          light.type == geometry::LightType::area ? light_centre(light) : light.position;
+      const auto cube = cube_views(from, mo.resolution, view_margin(mo, light), near);
       views[l].assign(cube.begin(), cube.end());
     } else {
-      views[l] = {directional_view(light.direction, bounds, mo.resolution, view_margin(mo))};
+      views[l] = {directional_view(light.direction, bounds, mo.resolution, view_margin(mo, light))};
     }
     maps[l].resize(views[l].size());
     for (std::size_t f = 0; f < views[l].size(); ++f) {
@@ -224,6 +260,20 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       const Receiver receiver{ray.origin + s.t * ray.direction, s.normal};
       for (std::uint32_t l = 0; l < lights; ++l) {
         ShadowClass& c = sample.classes[l];
+        if (frame.is_soft(l)) {
+          // An area light: PCSS's estimate of V (1 where nothing was looked up).
+          double v = 1;
+          if (decided[pixel * lights + l] == Decided::shadowed) v = 0;
+          if (decided[pixel * lights + l] == Decided::lookup) {
+            const int f = face[pixel * lights + l];
+            v = pcss_visibility(views[l][f], maps[l][f], receiver, radius[l], mo);
+            ++row_lookups;
+          }
+          sample.visibility[l] = static_cast<float>(v);
+          c = v > 0 ? ShadowClass::lit : ShadowClass::shadowed;
+          sample.counts[l] = 0;
+          continue;
+        }
         switch (decided[pixel * lights + l]) {
           case Decided::lit:
             c = ShadowClass::lit;

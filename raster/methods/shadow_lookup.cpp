@@ -167,4 +167,47 @@ double lit_fraction(const MapView& view, const DepthMap& map, const Receiver& re
   return passes(at->z, stored, bias) ? 1 : 0;
 }
 
+double pcss_visibility(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                       double light_radius, const ShadowMapOptions& options) {
+  const std::optional<ViewPoint> at = project(view, receiver.point);
+  if (!at) return 1;  // behind the light's centre: nothing in this view lies between
+  const double bias = depth_bias(view, receiver, options);
+  const ViewPlane plane = view_plane(view, receiver);
+  const double z = at->z;
+  // Up to 16 × 16 taps at texel centres over [c − r, c + r]², r in texels.
+  const auto taps = [&](double r, const auto& visit) {
+    const int reach = std::clamp(static_cast<int>(std::ceil(r)), 0, kPcssMaxRadius);
+    const int i0 = floor_to_int(at->u) - reach, j0 = floor_to_int(at->v) - reach;
+    const int width = 2 * reach + 1;
+    const int step = std::max(1, (width + 15) / 16);
+    for (int b = 0; b < width; b += step)
+      for (int a = 0; a < width; a += step) {
+        const int i = std::clamp(i0 + a, 0, map.size - 1), j = std::clamp(j0 + b, 0, map.size - 1);
+        visit(map.at(i, j), plane_depth(view, plane, i + 0.5, j + 0.5));
+      }
+  };
+  // 1. Blockers: taps whose stored depth the receiver's plane lies behind.
+  const double search = light_radius / z / view.texel();
+  double blocker_sum = 0;
+  int blockers = 0;
+  taps(search, [&](float stored, double receiver_z) {
+    if (!passes(receiver_z, stored, bias)) {
+      blocker_sum += stored;
+      ++blockers;
+    }
+  });
+  if (blockers == 0) return 1;
+  // 2. The penumbra's half-width, projected at the receiver, in texels.
+  const double blocker_z = blocker_sum / blockers;
+  const double penumbra = light_radius * (z - blocker_z) / blocker_z / z / view.texel();
+  // 3. PCF over it.
+  double lit = 0;
+  int count = 0;
+  taps(std::max(penumbra, 0.5), [&](float stored, double receiver_z) {
+    lit += passes(receiver_z, stored, bias) ? 1 : 0;
+    ++count;
+  });
+  return count > 0 ? lit / count : 1;
+}
+
 }  // namespace umbra::raster

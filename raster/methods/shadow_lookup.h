@@ -40,4 +40,26 @@ Offset dither_offset(std::uint64_t key);
 double lit_fraction(const MapView& view, const DepthMap& map, const Receiver& receiver,
                     const ShadowMapOptions& options, Offset offset = {});
 
+/// The widest blocker search and filter PCSS takes, in texels from the
+/// centre (views of area lights carry this margin).
+inline constexpr int kPcssMaxRadius = 32;
+
+/// Percentage-closer soft shadows (Fernando 2005) for an area light,
+/// approximated by a disc of radius `light_radius` (the light's area over
+/// π, square-rooted) at the view's origin (the light's centroid; `view`
+/// must be perspective). Three steps, every tap comparing the receiver's
+/// plane with the stored depth plus the bias, as PCF does:
+///   1. blocker search over the square of half-width R/z_r (projected: the
+///      light's disc seen from the receiver at depth z_r, as it crosses
+///      depth z_r / 2), at most kPcssMaxRadius texels, at most 16 × 16
+///      taps: the mean view depth z_b of the taps that block;
+///   2. none block: 1. Else the penumbra's half-width at the receiver,
+///      R·(z_r − z_b) / z_b, projected (divided by z_r);
+///   3. the lit fraction of a square of that half-width (at least half a
+///      texel, at most kPcssMaxRadius), at most 16 × 16 taps.
+/// An estimate of the visible fraction V, in [0, 1]; its errors are
+/// charted in docs/methods.md.
+double pcss_visibility(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                       double light_radius, const ShadowMapOptions& options);
+
 }  // namespace umbra::raster
