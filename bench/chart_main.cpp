@@ -52,15 +52,21 @@ std::vector<NamedScene> chart_scenes(const Args& args) {
   std::vector<NamedScene> out;
   const fs::path data = UMBRA_DATA_DIR;
   const std::vector<std::string> files =
-      args.quick ? std::vector<std::string>{"default.json"}
+      args.quick ? std::vector<std::string>{"default.json", "soft.json"}
                  : std::vector<std::string>{"default.json",
                                             "two_lights.json",
                                             "bergeron/fig04_limited_light.json",
                                             "bergeron/fig08_twisted_quad.json",
                                             "bergeron/fig14_eye_under_closed_cube.json",
-                                            "bergeron/fig15_sphere_of_influence.json"};
-  for (const std::string& f : files)
+                                            "bergeron/fig15_sphere_of_influence.json",
+                                            "soft.json",
+                                            "soft_long_light.json"};
+  for (const std::string& f : files) {
     out.push_back({fs::path(f).stem().string(), geometry::load_scene(data / "scenes" / f)});
+    // The quick smoke's area light at 80 x 60: its exact truth in a second.
+    if (args.quick && f == "soft.json") out.back().scene.camera.width = 80;
+    if (args.quick && f == "soft.json") out.back().scene.camera.height = 60;
+  }
   std::stringstream list(args.meshes);
   for (std::string mesh; std::getline(list, mesh, ':');)
     if (!mesh.empty())
@@ -94,7 +100,7 @@ std::string csv_row(const std::string& kind, const std::string& name, const std:
       row.scored() ? 100.0 * static_cast<double>(row.errors()) / row.scored() : 0.0;
   return fmt::format(
       "{},{},\"{}\",{},{},{},{},{},\"{}\",{},{},{},{},{},{},{},{},{:.6f},{},{},{},{},{},{},{},{},"
-      "{}\n",
+      "{},{},{},{}\n",
       kind, name, parameter, value, scene.lights.size(), scene.camera.width, scene.camera.height,
       row.setting.method, row.setting.curve, map ? std::to_string(o.map.resolution) : "",
       map ? fmt::format("{}", o.map.constant_bias) : "",
@@ -102,14 +108,17 @@ std::string csv_row(const std::string& kind, const std::string& name, const std:
       map ? std::to_string(o.map.pcf) : "", ray ? fmt::format("{}", o.ray.epsilon) : "",
       row.seconds.size(), times, row.median_seconds, row.compared, row.boundary, row.scored(),
       row.false_lit, row.false_shadowed, row.wrong_range, row.errors(),
-      row.is_scored ? fmt::format("{:.6f}", percent) : "", row.is_scored ? "1" : "0");
+      row.is_scored ? fmt::format("{:.6f}", percent) : "", row.is_scored ? "1" : "0",
+      ray ? std::to_string(o.ray.area_samples) : "",
+      row.soft_scored ? fmt::format("{:.6g}", row.soft_error_sum / row.soft_scored) : "",
+      row.soft_scored ? fmt::format("{:.6g}", row.soft_max_error) : "");
 }
 
 constexpr const char* kHeader =
     "kind,name,parameter,value,lights,width,height,method,curve,map_resolution,"
     "map_constant_bias,map_slope_bias,map_lookup,map_pcf,ray_epsilon,runs,seconds,median_s,"
     "compared,boundary,scored,false_lit,false_shadowed,wrong_range,errors,error_percent,scored_"
-    "flag\n";
+    "flag,ray_area_samples,soft_mean_error,soft_max_error\n";
 
 void report(const std::string& name, const std::string& value, const Row& row) {
   std::fprintf(stderr, "  %-28s %-8s %-40s %9.1f ms  %6llu errors of %llu\n", name.c_str(),
@@ -156,7 +165,11 @@ int run(const Args& args) {
       // One untimed render first, so that no setting pays for cold caches,
       // first page faults and thread start-up.
       raster::render(s.scene, {.method = raster::Method::volume, .shadows = false});
-      for (const Setting& setting : chart_settings(args.quick, s.max_map_resolution)) {
+      const bool area = std::any_of(s.scene.lights.begin(), s.scene.lights.end(),
+                                    [](const geometry::Light& l) {
+                                      return l.type == geometry::LightType::area;
+                                    });
+      for (const Setting& setting : chart_settings(args.quick, s.max_map_resolution, area)) {
         if (!wanted(args, setting)) continue;
         raster::Frame frame;
         const Row row = run_setting(s.scene, truth, setting, args.runs, &frame);

@@ -47,9 +47,20 @@ Setting plain_setting() {
 
 }  // namespace
 
-std::vector<Setting> chart_settings(bool quick, int max_map_resolution) {
+std::vector<Setting> chart_settings(bool quick, int max_map_resolution, bool area) {
   using raster::MapLookup;
   std::vector<Setting> out = {plain_setting(), volume_setting()};
+  if (area) {
+    for (const int n : quick ? std::vector<int>{16} : std::vector<int>{16, 64, 256, 1024}) {
+      Setting r = ray_setting("ray, N light samples (16, 64, 256, 1024)", 1);
+      r.options.ray.area_samples = n;
+      out.push_back(r);
+    }
+    for (const int res : quick ? std::vector<int>{512} : std::vector<int>{512, 1024, 2048})
+      if (res <= max_map_resolution)
+        out.push_back(map_setting("map PCSS", res, 1, MapLookup::nearest, 1));
+    return out;
+  }
   for (const double f : quick ? std::vector<double>{1} : std::vector<double>{0, 1, 100})
     out.push_back(ray_setting("ray (epsilon x0, x1, x100 of default)", f));
   const std::vector<int> resolutions =
@@ -103,6 +114,12 @@ Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
   const raster::ShadowChannels channels = raster::shadow_channels(frame);
   const raster::ValidationReport report = raster::score_render(truth, channels);
   for (const raster::LightReport& l : report.lights) {
+    if (l.soft) {
+      row.soft_mismatches += l.mismatches;
+      row.soft_scored += l.scored();
+      row.soft_error_sum += l.sum_error;
+      row.soft_max_error = std::max(row.soft_max_error, l.max_error);
+    }
     row.compared += l.compared;
     row.boundary += l.boundary;
     row.false_lit += l.false_lit;
@@ -118,7 +135,8 @@ std::string setting_label(const Setting& setting) {
     return fmt::format("map-{}-{}-b{:g}-s{:g}-pcf{}", o.map.resolution,
                        o.map.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest",
                        o.map.constant_bias, o.map.slope_bias, o.map.pcf);
-  if (setting.method == "ray") return fmt::format("ray-eps{:g}", o.ray.epsilon);
+  if (setting.method == "ray")
+    return fmt::format("ray-eps{:g}-n{}", o.ray.epsilon, o.ray.area_samples);
   return setting.method;
 }
 

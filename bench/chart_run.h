@@ -23,15 +23,21 @@ struct Row {
   /// Summed over lights; `scored` excludes boundary samples.
   std::uint64_t compared = 0, boundary = 0, false_lit = 0, false_shadowed = 0, wrong_range = 0;
   bool is_scored = true;  ///< false for "plain"
-  std::uint64_t errors() const { return false_lit + false_shadowed + wrong_range; }
+  /// Area lights: scored samples whose |V − V_exact| exceeds 1e-6, and the
+  /// sum and largest of |V − V_exact| over all their scored samples.
+  std::uint64_t soft_mismatches = 0, soft_scored = 0;
+  double soft_error_sum = 0, soft_max_error = 0;
+  std::uint64_t errors() const { return false_lit + false_shadowed + wrong_range + soft_mismatches; }
   std::uint64_t scored() const { return compared - boundary; }
 };
 
 /// The settings of the scene charts: plain, volume, ray across epsilons and
 /// shadow maps across resolutions (curves per bias, lookup and filter).
 /// `max_map_resolution` bounds the maps (many lights, memory); `quick` keeps
-/// one or two points per curve.
-std::vector<Setting> chart_settings(bool quick, int max_map_resolution);
+/// one or two points per curve. A scene with area lights (`area`) charts
+/// instead ray across light samples N and the map's PCSS across
+/// resolutions.
+std::vector<Setting> chart_settings(bool quick, int max_map_resolution, bool area = false);
 
 /// The settings of the sweeps: each method at its defaults, and a coarse
 /// shadow map (512) beside the default one.

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """CTest check of a quick umbra_chart run: the CSV holds every method on every
 chart scene and every sweep point, the volume method never misclassifies a
-sample, each scored row scored samples, and chart.py drew every chart.
+sample (nor errs by more than 1e-6 in an area light's V), each scored row
+scored samples, and chart.py drew every chart.
 
 Usage: check_chart.py RESULTS.csv CHART_DIR
 """
@@ -33,6 +34,12 @@ def main():
             fail(f"volume misclassified {r['errors']} samples on {r['name']} {r['value']}")
         if float(r["median_s"]) <= 0:
             fail(f"{r['name']} {r['curve']}: no time")
+        if r["name"].startswith("soft"):
+            # An area light's rows carry |V - V_exact|; the volume's within 1e-6.
+            if not r["soft_mean_error"] or not r["soft_max_error"]:
+                fail(f"{r['name']} {r['curve']}: no visible-fraction error")
+            if r["method"] == "volume" and float(r["soft_max_error"]) > 1e-6:
+                fail(f"volume's V errs by {r['soft_max_error']} on {r['name']}")
     scenes = {n for (k, n) in by_name if k == "scene"}
     sweeps = {n for (k, n) in by_name if k != "scene"}
     if sweeps != SWEEPS:
@@ -47,6 +54,8 @@ def main():
     for name in sweeps:
         if not (out / f"sweep-{name}.png").stat().st_size:
             fail(f"sweep-{name}.png is empty")
+    if "soft" not in scenes:
+        fail("no area-light scene")
     if "| default |" not in (out / "summary.md").read_text():
         fail("summary.md lacks the default scene")
     print(f"check_chart: {len(rows)} rows, {len(scenes)} scenes, {len(sweeps)} sweeps: ok")
