@@ -165,10 +165,9 @@ int run(const Args& args) {
       // One untimed render first, so that no setting pays for cold caches,
       // first page faults and thread start-up.
       raster::render(s.scene, {.method = raster::Method::volume, .shadows = false});
-      const bool area = std::any_of(s.scene.lights.begin(), s.scene.lights.end(),
-                                    [](const geometry::Light& l) {
-                                      return l.type == geometry::LightType::area;
-                                    });
+      const bool area =
+          std::any_of(s.scene.lights.begin(), s.scene.lights.end(),
+                      [](const geometry::Light& l) { return l.type == geometry::LightType::area; });
       for (const Setting& setting : chart_settings(args.quick, s.max_map_resolution, area)) {
         if (!wanted(args, setting)) continue;
         raster::Frame frame;

@@ -27,7 +27,9 @@ struct Row {
   /// sum and largest of |V − V_exact| over all their scored samples.
   std::uint64_t soft_mismatches = 0, soft_scored = 0;
   double soft_error_sum = 0, soft_max_error = 0;
-  std::uint64_t errors() const { return false_lit + false_shadowed + wrong_range + soft_mismatches; }
+  std::uint64_t errors() const {
+    return false_lit + false_shadowed + wrong_range + soft_mismatches;
+  }
   std::uint64_t scored() const { return compared - boundary; }
 };
 

@@ -44,7 +44,7 @@ PY
   run() { /usr/bin/time -f "$model $1 %e s" "${@:2}"; }
   run "hard frame (point light at the centre), volume" \
     "$umbra" render "$out/$model-centre.json" --threads "$threads" -q -o "$out/$model-centre.exr"
-  run "area light, volume (exact V)" \
+  run "area light, volume (certified V)" \
     "$umbra" render "$out/$model-area.json" --threads "$threads" -q -o "$out/$model-volume.exr"
   for n in 16 64 256 1024; do
     run "area light, ray N=$n" "$umbra" render "$out/$model-area.json" --threads "$threads" -q \

@@ -3,9 +3,9 @@
 // far from it, 0 under its middle, a penumbra across its shadow's edge that
 // falls monotonically and widens with the light; and the map method renders
 // area lights with it, scored against the exact fraction.
+#include <raster/image_io.h>
 #include <raster/methods/shadow_lookup.h>
 #include <raster/methods/shadow_map.h>
-#include <raster/image_io.h>
 #include <raster/render.h>
 #include <raster/validate.h>
 #include <tests/support/scene_builders.h>
@@ -77,8 +77,12 @@ TEST(Pcss, MapMethodRendersAnAreaLightAndValidationScoresIt) {
   // (visibility.0), exact where nothing is near (0 mismatches far from the
   // box is not claimed: PCSS errs in the penumbra), within [0, 1] everywhere.
   geometry::Scene scene;
-  scene.camera = {.eye = {0, 6, 6}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .fov_y_deg = 40,
-                  .width = 64, .height = 48};
+  scene.camera = {.eye = {0, 6, 6},
+                  .look_at = {0, 0, 0},
+                  .up = {0, 1, 0},
+                  .fov_y_deg = 40,
+                  .width = 64,
+                  .height = 48};
   scene.models.push_back(test::box({-4, -0.5, -4}, {4, 0, 4}));
   scene.models.push_back(test::box({-0.5, 0, -0.5}, {0.5, 1, 0.5}));
   geometry::Light light;
