@@ -53,8 +53,6 @@ bool crossing(const Span& s, const Span& t, Event& out) {
   return true;
 }
 
-/// Every endpoint x and every proper crossing, merged into clusters of
-/// overlapping intervals, sorted.
 /// Per-thread scratch: the sweep runs once a penumbra sample, and fresh
 /// vectors cost as much as the sweep on the small edge sets it sees.
 template <class T>
@@ -64,6 +62,9 @@ std::vector<T>& scratch() {
   return v;
 }
 
+/// Every endpoint x and every proper crossing, merged into clusters of
+/// overlapping intervals, sorted (per-thread storage, valid until the next
+/// call).
 const std::vector<Event>& clusters_of(const std::vector<Span>& spans,
                                       std::span<const SweepEdge> edges) {
   thread_local std::vector<Event> events;

@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace umbra::geometry {
@@ -355,20 +356,24 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   const HitTriangle tri = hit_triangle(index, hit);
   const SamplePoint sp{ray.origin, ray.direction, tri.a, tri.b, tri.c};
 
+  // The light's pieces, kept per thread for the last few lights seen:
+  // consecutive samples ask about the same lights.
+  thread_local std::vector<std::pair<std::vector<Vec3>, std::vector<LightPiece>>> cache;
+  auto cached = std::find_if(cache.begin(), cache.end(),
+                             [&](const auto& entry) { return entry.first == light.vertices; });
+  if (cached == cache.end()) {
+    if (cache.size() == 8) cache.erase(cache.begin());
+    cache.push_back({light.vertices, light_pieces(light.vertices)});
+    cached = cache.end() - 1;
+  }
+  const std::vector<LightPiece>& pieces = cached->second;
+
   // Candidates: every polygon whose box may meet a pyramid from H over a
   // piece of the light: the BVH's boxes tested against the pyramids' planes
   // in doubles with a proven margin (pyramid_filter.h), so that a box is
   // passed over only when it certainly lies outside one of them. A polygon
   // holding H is always kept (H lies on every side, strictly inside the
   // light's plane), so touching and flat-seam triangles are all seen.
-  // The light's pieces, made once a thread for the light it last saw:
-  // consecutive samples ask about the same light.
-  thread_local std::vector<Vec3> pieces_of;
-  thread_local std::vector<LightPiece> pieces;
-  if (pieces.empty() || pieces_of != light.vertices) {
-    pieces = light_pieces(light.vertices);
-    pieces_of = light.vertices;
-  }
   double magnitude = index.magnitude();
   for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
   const PyramidFilter filter(pieces, sp, magnitude);
