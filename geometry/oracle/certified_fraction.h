@@ -41,8 +41,12 @@ struct BlockerTriangle {
 /// casting polygon (a polygon's surface is its fan triangles counted mod 2;
 /// a lone triangle is its own polygon). The answer is within `tolerance` of
 /// the exact fraction; nullopt when that cannot be shown.
+/// `h_box`, when given, is a box known to hold H (the exact H rounded
+/// outwards): tighter than the interval H made from the ray, whose width
+/// the projection multiplies for blockers beside H.
 std::optional<double> certified_piece_fraction(
     const LightPiece& piece, const SamplePoint& sp,
-    std::span<const std::vector<BlockerTriangle>> polygons, double tolerance);
+    std::span<const std::vector<BlockerTriangle>> polygons, double tolerance,
+    const std::array<Vec3, 2>* h_box = nullptr);
 
 }  // namespace umbra::geometry::soft

@@ -232,8 +232,22 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
       blockers.emplace_back();
       for (const TriangleAtH& t : polygon) blockers.back().push_back({t.v, t.touches, t.through});
     }
-    if (const std::optional<double> v =
-            certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance)) {
+    std::optional<double> v = certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance);
+    if (!v) {
+      // Once more from the exact H rounded outwards (tighter than the
+      // interval H the ray gives, whose width blockers beside H magnify),
+      // before the exact union.
+      const P3& exact_h = h.get();
+      std::array<double, 3> x;
+      for (int k = 0; k < 3; ++k) x[k] = nearest_double(exact_h[k]);
+      const std::array<Vec3, 2> box{
+          Vec3{std::nextafter(x[0], -INFINITY), std::nextafter(x[1], -INFINITY),
+               std::nextafter(x[2], -INFINITY)},
+          Vec3{std::nextafter(x[0], INFINITY), std::nextafter(x[1], INFINITY),
+               std::nextafter(x[2], INFINITY)}};
+      v = certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance, &box);
+    }
+    if (v) {
       result.fraction = *v;
       result.certified = true;
       return result;
@@ -377,7 +391,8 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   double magnitude = index.magnitude();
   for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
   const PyramidFilter filter(pieces, sp, magnitude);
-  std::vector<std::uint32_t> candidates;
+  thread_local std::vector<std::uint32_t> candidates;  // per-thread scratch: every sample asks
+  candidates.clear();
   index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
   std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
 
@@ -395,7 +410,8 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
 
   VisibleFraction answer;
   bool in_plane = false;
-  std::vector<double> fractions;
+  thread_local std::vector<double> fractions;
+  fractions.clear();
   for (const LightPiece& piece : pieces) {
     const PieceResult r =
         triangles.polygons.empty()
