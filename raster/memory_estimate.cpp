@@ -1,6 +1,7 @@
 #include <geometry/volumes/model_reach.h>
 #include <raster/light_windows.h>
 #include <raster/memory_estimate.h>
+#include <raster/methods/shadow_lookup.h>
 
 #include <algorithm>
 #include <vector>
@@ -117,11 +118,16 @@ u64 estimate_render_bytes(const geometry::Scene& scene, const RenderOptions& opt
   if (options.method == Method::volume && options.shadows)
     bytes = add(bytes, volume_bytes_all_lights(scene));
   if (options.method == Method::map) {
-    // Every view a light may need (six cube faces of a point light, one
-    // view of a directional light), float texels with their margins.
-    const u64 side = static_cast<u64>(options.map.resolution) + 8;
-    for (const geometry::Light& light : scene.lights)
-      bytes = add(bytes, mul((light.type == geometry::LightType::point ? 6 : 1) * 4, side * side));
+    // Every view a light may need (six cube faces of a point light or of
+    // an area light's centroid, one view of a directional light), float
+    // texels with their margins (PCSS's wider for an area light).
+    for (const geometry::Light& light : scene.lights) {
+      const bool area = light.type == geometry::LightType::area;
+      const u64 side =
+          static_cast<u64>(options.map.resolution) + (area ? 2 * (kPcssMaxRadius + 2) : 8);
+      const u64 views = light.type == geometry::LightType::directional ? 1 : 6;
+      bytes = add(bytes, mul(views * 4, side * side));
+    }
   }
   return bytes;
 }
