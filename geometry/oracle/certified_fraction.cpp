@@ -179,14 +179,12 @@ std::optional<double> certified_piece_fraction(
     std::span<const std::vector<BlockerTriangle>> polygons, double tolerance,
     const std::array<Vec3, 2>* h_box) {
   CGAL::Protect_FPU_rounding<true> guard;
-  // H on the hit triangle's plane: eye + t·d, t = n·(a − eye) / n·d.
-  const IPoint a = ip(sp.hit0);
-  const IPoint n = cross(ip(sp.hit1) - a, ip(sp.hit2) - a);
-  const IPoint eye = ip(sp.eye), d = ip(sp.direction);
+  // H on the hit triangle's plane, or the caller's tighter box around it.
+  const IPoint d = ip(sp.direction);
   const IPoint h =
       h_box ? IPoint{Interval((*h_box)[0].x, (*h_box)[1].x), Interval((*h_box)[0].y, (*h_box)[1].y),
                      Interval((*h_box)[0].z, (*h_box)[1].z)}
-            : eye + d * (dot(n, a - eye) / dot(n, d));
+            : interval_hit(sp);
 
   // The light's plane, H's side kept; its 2D axes drop the normal's largest
   // coordinate (an affine bijection of the plane: area ratios are kept).

@@ -3,6 +3,7 @@
 // and convex clipping of them whose every decision is certain, for the
 // certified visible fraction (certified_fraction.h). Callers hold
 // CGAL::Protect_FPU_rounding<true>.
+#include <geometry/exact/predicates.h>
 #include <geometry/oracle/covered_area_sweep.h>
 #include <geometry/vec3.h>
 
@@ -31,6 +32,15 @@ inline IPoint operator*(const IPoint& a, const Interval& k) { return {a.x * k, a
 inline Interval dot(const IPoint& a, const IPoint& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline IPoint cross(const IPoint& a, const IPoint& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// H, the hit of `sp` on the plane of its hit triangle: eye + t·d,
+/// t = n·(a − eye) / n·d, in intervals.
+inline IPoint interval_hit(const SamplePoint& sp) {
+  const IPoint a = ip(sp.hit0);
+  const IPoint n = cross(ip(sp.hit1) - a, ip(sp.hit2) - a);
+  const IPoint eye = ip(sp.eye), d = ip(sp.direction);
+  return eye + d * (dot(n, a - eye) / dot(n, d));
 }
 
 /// The sign of an interval, or nullopt when it holds 0 and is not [0, 0].

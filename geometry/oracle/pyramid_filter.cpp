@@ -1,39 +1,23 @@
+#include <geometry/oracle/interval_clip.h>
 #include <geometry/oracle/pyramid_filter.h>
-
-#include <CGAL/Interval_nt.h>
 
 #include <cmath>
 
 namespace umbra::geometry::soft {
 namespace {
 
-using Interval = CGAL::Interval_nt<false>;  // under the rounding guard below
-
-struct IVec {
-  Interval x, y, z;
-};
-IVec iv(const Vec3& v) { return {Interval(v.x), Interval(v.y), Interval(v.z)}; }
-IVec operator-(const IVec& a, const IVec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-IVec cross(const IVec& a, const IVec& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Interval dot(const IVec& a, const IVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double mid(const Interval& v) { return v.inf() / 2 + v.sup() / 2; }
-double rad(const Interval& v) { return v.sup() - v.inf(); }  // the diameter: safe for the midpoint
+/// An interval's diameter: a bound on its midpoint's error.
+double diameter(const Interval& v) { return v.sup() - v.inf(); }
 
 }  // namespace
 
 PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp,
                              double magnitude) {
   CGAL::Protect_FPU_rounding<true> guard;  // upwards: every bound below rounds up
-  const IVec a = iv(sp.hit0);
-  const IVec n = cross(iv(sp.hit1) - a, iv(sp.hit2) - a);
-  const IVec eye = iv(sp.eye), d = iv(sp.direction);
-  const Interval t = dot(n, a - eye) / dot(n, d);
-  const IVec h{eye.x + d.x * t, eye.y + d.y * t, eye.z + d.z * t};
+  const IPoint h = interval_hit(sp);
   // Outside is where s·(N·x − N·o) < 0 for the plane's normal N through o,
   // s the sign of the inside reference `in`.
-  const auto plane = [&](const IVec& normal, const IVec& origin, const IVec& in,
+  const auto plane = [&](const IPoint& normal, const IPoint& origin, const IPoint& in,
                          std::vector<Plane>& out) {
     const Interval c = dot(normal, origin);
     const Interval inside = dot(normal, in) - c;
@@ -46,7 +30,8 @@ PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const SamplePoi
         !std::isfinite(p.c))
       return;
     const double gamma = 5e-16;  // > γ₄ = 4u/(1 − 4u), u = 2⁻⁵³
-    p.margin = 2 * ((rad(normal.x) + rad(normal.y) + rad(normal.z)) * magnitude + rad(c) +
+    p.margin = 2 * ((diameter(normal.x) + diameter(normal.y) + diameter(normal.z)) * magnitude +
+                    diameter(c) +
                     gamma * ((std::abs(p.n.x) + std::abs(p.n.y) + std::abs(p.n.z)) * magnitude +
                              std::abs(p.c)));
     if (std::isfinite(p.margin)) out.push_back(p);
@@ -55,12 +40,12 @@ PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const SamplePoi
     std::vector<Plane> planes;
     const std::size_t m = piece.hull.size();
     for (std::size_t i = 0; i < m; ++i) {
-      const IVec p = iv(piece.hull[i]), q = iv(piece.hull[(i + 1) % m]);
-      plane(cross(p - h, q - h), h, iv(piece.hull[(i + 2) % m]), planes);
+      const IPoint p = ip(piece.hull[i]), q = ip(piece.hull[(i + 1) % m]);
+      plane(cross(p - h, q - h), h, ip(piece.hull[(i + 2) % m]), planes);
     }
     const std::array<Vec3, 3>& f = piece.fan.front();
-    const IVec f0 = iv(f[0]);
-    plane(cross(iv(f[1]) - f0, iv(f[2]) - f0), f0, h, planes);
+    const IPoint f0 = ip(f[0]);
+    plane(cross(ip(f[1]) - f0, ip(f[2]) - f0), f0, h, planes);
     pyramids_.push_back(std::move(planes));
   }
 }

@@ -95,13 +95,7 @@ int view_margin(const ShadowMapOptions& o, const geometry::Light& light) {
   return light.type == geometry::LightType::area ? kPcssMaxRadius + 2 : o.pcf / 2 + 2;
 }
 
-/// Where an area light's depth views look from: the centroid of its
-/// vertices; and the radius of the disc of its area, PCSS's light size.
-Vec3 light_centre(const geometry::Light& light) {
-  Vec3 c{0, 0, 0};
-  for (const Vec3& v : light.vertices) c = c + v;
-  return c * (1.0 / static_cast<double>(light.vertices.size()));
-}
+/// The radius of the disc of an area light's area: PCSS's light size.
 double disc_radius(const geometry::Light& light) {
   // The fan's vector area, |Σ (v_k − v_0) × (v_k+1 − v_0)| / 2: the area of
   // a planar polygon (its projection's, for a non-planar one).
@@ -145,9 +139,15 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   std::atomic<std::uint64_t> fallbacks{0};
   Frame frame(camera.width, camera.height, lights, options.threads);
   frame.soft = soft_lights(scene);
+  // Per area light, once: where its depth views look from (the centroid
+  // shading uses) and PCSS's light size.
+  std::vector<Vec3> centre(lights);
   std::vector<double> radius(lights, 0);
   for (std::size_t l = 0; l < lights; ++l)
-    if (scene.lights[l].type == geometry::LightType::area) radius[l] = disc_radius(scene.lights[l]);
+    if (scene.lights[l].type == geometry::LightType::area) {
+      centre[l] = area_light_centre(scene.lights[l]);
+      radius[l] = disc_radius(scene.lights[l]);
+    }
   progress.phase("visible", static_cast<std::uint64_t>(rows.size()));
   for_each_row(rows, options.threads, [&](int j) {
     std::vector<std::uint32_t> row_needed(lights, 0);
@@ -192,8 +192,8 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
         } else {
           d = Decided::lookup;
           const int f = light.type == geometry::LightType::point ? cube_face(point - light.position)
-                        : area ? cube_face(point - light_centre(light))
-                               : 0;
+                        : area                                   ? cube_face(point - centre[l])
+                                                                 : 0;
           face[pixel * lights + l] = static_cast<std::uint8_t>(f);
           row_needed[l] |= 1u << f;
         }
@@ -219,8 +219,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   for (std::size_t l = 0; l < lights; ++l) {
     const geometry::Light& light = scene.lights[l];
     if (light.type == geometry::LightType::point || light.type == geometry::LightType::area) {
-      const Vec3 from =
-          light.type == geometry::LightType::area ? light_centre(light) : light.position;
+      const Vec3 from = light.type == geometry::LightType::area ? centre[l] : light.position;
       const auto cube = cube_views(from, mo.resolution, view_margin(mo, light), near);
       views[l].assign(cube.begin(), cube.end());
     } else {
