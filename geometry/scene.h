@@ -17,6 +17,12 @@ struct Rgb {
   friend bool operator==(const Rgb&, const Rgb&) = default;
 };
 
+/// A model's light passes through it (some channel of its transmittance
+/// above 0) while it casts shadows: its shadows are coloured.
+inline bool tinted(const Rgb& transmittance) {
+  return transmittance.r > 0 || transmittance.g > 0 || transmittance.b > 0;
+}
+
 struct Camera {
   Vec3 eye{0, 0, 1};
   Vec3 look_at{0, 0, 0};
@@ -65,6 +71,10 @@ struct Model {
   Rgb specular{0, 0, 0};
   double shininess = 32;
   bool casts_shadows = true;
+  /// The fraction of a point or directional light's intensity, per channel,
+  /// that passes through one of its polygons (DESIGN.md "Transmittance",
+  /// docs/transmittance.md): each in [0, 1]; black (the default) is opaque.
+  Rgb transmittance{0, 0, 0};
   /// Whether `umbra footprint` partitions its polygons by default.
   bool receives = true;
 };
@@ -83,6 +93,14 @@ struct Scene {
   /// external buffers and images (outputs must not overwrite any of them).
   std::vector<std::filesystem::path> inputs;
 };
+
+/// Some shadow-casting model of `scene` lets light through (tinted): its
+/// renders carry transmittance.<i> AOVs (docs/transmittance.md).
+inline bool has_transmittance(const Scene& scene) {
+  for (const Model& m : scene.models)
+    if (m.casts_shadows && tinted(m.transmittance)) return true;
+  return false;
+}
 
 /// How load_scene treats optional parts of a scene file.
 struct SceneLoadOptions {

@@ -222,6 +222,14 @@ std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOpti
   if (options.lights.empty())
     for (std::uint32_t l = 0; l < scene.lights.size(); ++l) out.push_back(l);
   std::sort(out.begin(), out.end());
+  // Coloured shadows would split regions where τ changes (issue 22); drawn
+  // as if the tinted models were opaque they would be silently wrong.
+  for (std::size_t m = 0; m < scene.models.size(); ++m)
+    if (scene.models[m].casts_shadows && tinted(scene.models[m].transmittance))
+      throw std::invalid_argument(fmt::format(
+          "footprint: model {} ('{}') has a transmittance; footprints do not carry coloured "
+          "shadows yet (docs/transmittance.md)",
+          m, scene.models[m].name));
   for (std::uint32_t l : out) {
     if (scene.lights[l].type == LightType::area)
       throw std::invalid_argument(fmt::format(

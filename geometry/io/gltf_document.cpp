@@ -184,7 +184,8 @@ void Document::check_glb_container(std::string_view bytes) const {
 void Document::check_required_extensions() const {
   for (std::size_t i = 0; i < model_.extensionsRequired.size(); ++i) {
     const std::string& name = model_.extensionsRequired[i];
-    if (name != "KHR_lights_punctual")
+    // KHR_materials_transmission: umbra reads its factor (gltf_scene.cpp).
+    if (name != "KHR_lights_punctual" && name != "KHR_materials_transmission")
       fail(item("extensionsRequired", i),
            "required extension '" + name + "' is not supported by umbra");
   }

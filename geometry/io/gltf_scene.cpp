@@ -65,6 +65,7 @@ class SceneReader {
     std::string name;
     PolygonSoup soup;
     Rgb color{1, 1, 1};
+    Rgb transmittance{0, 0, 0};
   };
 
   /// Visits the default scene's nodes in pre-order with their world matrices.
@@ -122,6 +123,7 @@ class SceneReader {
                         "/" + std::to_string(p);
         instance.soup = std::move(*soup);
         instance.color = color_of(mesh.primitives[p], prim_path);
+        instance.transmittance = transmittance_of(mesh.primitives[p], instance.color);
         out.push_back(std::move(instance));
       }
     });
@@ -380,6 +382,37 @@ class SceneReader {
     return {f[0], f[1], f[2]};
   }
 
+  /// KHR_materials_transmission: light passes through the surface in the
+  /// fraction transmissionFactor, tinted by the base colour (the
+  /// extension's rule: transmitted light is multiplied by baseColor), so a
+  /// shadow's transmittance is factor × baseColorFactor per channel
+  /// (docs/transmittance.md). The transmissionTexture is not read: a
+  /// texture's mean is no shadow's colour. No extension: opaque.
+  Rgb transmittance_of(const tinygltf::Primitive& prim, const Rgb& base) const {
+    if (prim.material < 0) return {0, 0, 0};
+    const auto m = static_cast<std::size_t>(prim.material);  // color_of checked the range
+    const auto ext = model_.materials[m].extensions.find("KHR_materials_transmission");
+    if (ext == model_.materials[m].extensions.end()) return {0, 0, 0};
+    const std::string ext_path = item("materials", m) + ".extensions.KHR_materials_transmission";
+    const tinygltf::Value& v = ext->second;
+    if (!v.IsObject()) fail(ext_path, "must be an object");
+    double factor = 0;  // the extension's default
+    if (v.Has("transmissionFactor")) {
+      const tinygltf::Value& f = v.Get("transmissionFactor");
+      if (!f.IsNumber() && !f.IsInt()) fail(ext_path + ".transmissionFactor", "must be a number");
+      factor = f.GetNumberAsDouble();
+      if (!(factor >= 0 && factor <= 1))
+        fail(ext_path + ".transmissionFactor", "must be in [0, 1]");
+    }
+    if (factor == 0) return {0, 0, 0};
+    const double channels[3] = {base.r, base.g, base.b};
+    for (std::size_t c = 0; c < 3; ++c)
+      if (channels[c] > 1)
+        fail(item(item("materials", m) + ".pbrMetallicRoughness.baseColorFactor", c),
+             "must be in [0, 1] for a transmitting material (it tints the light through it)");
+    return {factor * base.r, factor * base.g, factor * base.b};
+  }
+
   const gltf::Document& doc_;
   const tinygltf::Model& model_;
 };
@@ -403,6 +436,7 @@ Scene parse_gltf_scene(std::string_view bytes, const fs::path& file,
     model.vertices = std::move(instance.soup.vertices);
     model.polygons = std::move(instance.soup.polygons);
     model.color = instance.color;
+    model.transmittance = instance.transmittance;
     scene.models.push_back(std::move(model));
   }
   if (scene.models.empty())

@@ -221,7 +221,7 @@ Model read_model(const Fields& in, Element v, std::size_t index,
   in.expect_object(v, path);
   in.check_keys(v, path,
                 {"name", "mesh", "polygons", "color", "specular", "shininess", "casts_shadows",
-                 "receives", "transform"});
+                 "receives", "transmittance", "transform"});
   Model model;
   const std::optional<Element> name = Fields::find(v, "name");
   model.name = name ? in.string(*name, child(path, "name")) : "model" + std::to_string(index);
@@ -238,6 +238,14 @@ Model read_model(const Fields& in, Element v, std::size_t index,
     model.casts_shadows = in.boolean(*casts_shadows, child(path, "casts_shadows"));
   if (const std::optional<Element> receives = Fields::find(v, "receives"))
     model.receives = in.boolean(*receives, child(path, "receives"));
+  if (const std::optional<Element> transmittance = Fields::find(v, "transmittance")) {
+    const std::string at = child(path, "transmittance");
+    model.transmittance = in.rgb(*transmittance, at);
+    const double channels[3] = {model.transmittance.r, model.transmittance.g,
+                                model.transmittance.b};
+    for (std::size_t c = 0; c < 3; ++c)
+      if (channels[c] > 1) in.fail(item(at, c), "must be in [0, 1] (a fraction of the light)");
+  }
   Transform transform;
   const std::optional<Element> transform_field = Fields::find(v, "transform");
   if (transform_field) transform = read_transform(in, *transform_field, child(path, "transform"));
@@ -279,6 +287,25 @@ Model read_model(const Fields& in, Element v, std::size_t index,
   return model;
 }
 
+/// DESIGN.md defines τ(P) for point and directional lights only: a soft
+/// shadow through a tinted model would need the light's visible part
+/// weighted by what each part of it shines through, which no method of
+/// umbra's computes. Refused rather than drawn as if the model were opaque.
+void refuse_tinted_area_lights(const Fields& in, const Scene& scene) {
+  std::size_t tinted_model = 0;
+  for (; tinted_model < scene.models.size(); ++tinted_model) {
+    const Model& m = scene.models[tinted_model];
+    if (m.casts_shadows && tinted(m.transmittance)) break;
+  }
+  if (tinted_model == scene.models.size()) return;
+  for (std::size_t l = 0; l < scene.lights.size(); ++l)
+    if (scene.lights[l].type == LightType::area)
+      in.fail(item("lights", l),
+              "an area light in a scene whose " + item("models", tinted_model) +
+                  " has a transmittance: coloured soft shadows are not defined (transmittance "
+                  "applies to point and directional lights; docs/transmittance.md)");
+}
+
 }  // namespace
 
 Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
@@ -310,6 +337,7 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
     scene.models.push_back(read_model(in, model, i, scene.inputs));
     ++i;
   }
+  refuse_tinted_area_lights(in, scene);
   return scene;
 }
 

@@ -1,6 +1,7 @@
 #include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/exact/segment_crossing.h>
+#include <geometry/oracle/sample_segment.h>
 #include <geometry/oracle/shadow_oracle.h>
 
 #include <algorithm>
@@ -15,45 +16,54 @@ HPoint light_point(const Light& light) {
                                         : HPoint::at_infinity(-light.direction);
 }
 
-ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, const SurfaceHit& hit,
+SampleSegment sample_segment(const SceneIndex& index, const SampleRay& ray, const SurfaceHit& hit,
                              std::uint32_t light_index) {
   const Light& light = index.scene().lights[light_index];
   const HitTriangle h = hit_triangle(index, hit);
-  const SamplePoint p{ray.origin, ray.direction, h.a, h.b, h.c};
-  const HPoint lp = light_point(light);
-
-  // A boundary of the hit or of the range changes the class whatever else
-  // holds; a touch or a light in the hit plane only matters when nothing
-  // shadows P robustly.
-  bool hard_boundary = hit.boundary;
-  bool soft_boundary = false;
+  SampleSegment s{.p = {ray.origin, ray.direction, h.a, h.b, h.c},
+                  .light = light_point(light),
+                  .candidates = {}};
+  s.hard_boundary = hit.boundary;
   if (light.type == LightType::point && light.light_end) {
     const Sign range = compare_hit_distance(ray.origin, ray.direction, h.a, h.b, h.c,
                                             light.position, *light.light_end);
-    if (range == Sign::positive) return {ShadowClass::out_of_range, hard_boundary};
-    if (range == Sign::zero) hard_boundary = true;
+    if (range == Sign::positive) {
+      s.out_of_range = true;
+      return s;
+    }
+    if (range == Sign::zero) s.hard_boundary = true;
   }
   const IndexedPolygon& hit_polygon = index.polygons()[hit.polygon];
-  if (hit_polygon.casts_shadows &&
-      orientation(h.a, HPoint::point(h.b), HPoint::point(h.c), lp) == Sign::zero)
-    soft_boundary = true;
+  s.light_in_hit_plane =
+      hit_polygon.casts_shadows &&
+      orientation(h.a, HPoint::point(h.b), HPoint::point(h.c), s.light) == Sign::zero;
 
   // Candidates near the segment from (about) H to the light. H is known to a
   // few ulps of t·|d|; the slack covers that.
   const double t = ray_plane_parameter(ray.origin, ray.direction, h.a, h.b, h.c);
   const Vec3 approx_h = ray.origin + t * ray.direction;
   const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) + 1e-300;
-  std::vector<std::uint32_t> candidates;
-  index.query_segment(approx_h, lp.v, !lp.finite, slack, candidates);
+  index.query_segment(approx_h, s.light.v, !s.light.finite, slack, s.candidates);
+  std::sort(s.candidates.begin(), s.candidates.end());
+  return s;
+}
 
-  for (std::uint32_t pi : candidates) {
+ShadowAnswer classify_sample(const SceneIndex& index, const SampleRay& ray, const SurfaceHit& hit,
+                             std::uint32_t light_index) {
+  const SampleSegment s = sample_segment(index, ray, hit, light_index);
+  // A boundary of the hit or of the range changes the class whatever else
+  // holds; a touch or a light in the hit plane only matters when nothing
+  // shadows P robustly.
+  if (s.out_of_range) return {ShadowClass::out_of_range, s.hard_boundary};
+  bool soft_boundary = s.light_in_hit_plane;
+  for (std::uint32_t pi : s.candidates) {
     const IndexedPolygon& poly = index.polygons()[pi];
     if (!poly.casts_shadows) continue;
-    const Crossing c = cross_polygon(index, poly, lp, p);
+    const Crossing c = cross_polygon(index, poly, s.light, s.p);
     if (c.touches) soft_boundary = true;
-    if (c.odd) return {ShadowClass::shadowed, hard_boundary};  // robust: no small move undoes it
+    if (c.odd) return {ShadowClass::shadowed, s.hard_boundary};  // robust: no small move undoes it
   }
-  return {ShadowClass::lit, hard_boundary || soft_boundary};
+  return {ShadowClass::lit, s.hard_boundary || soft_boundary};
 }
 
 namespace {

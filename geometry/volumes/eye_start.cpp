@@ -91,6 +91,7 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsign
   const Vec3& eye = scene.camera.eye;
   EyeStart start;
   start.count.assign(lights, 0);
+  start.model_counts.assign(lights, {});
   start.degenerate.assign(lights, 0);
   start.planes.assign(lights, {});
   start.in_shadow.assign(volumes.twisted.size(), 0);
@@ -128,6 +129,7 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsign
       return;
     }
     start.planes[l] = std::move(*planes);
+    std::vector<std::uint32_t> counted;
     for (std::uint32_t pi : *odd) {
       const IndexedPolygon& p = index.polygons()[pi];
       // A model without a volume for this light (outside its sphere of
@@ -137,9 +139,11 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsign
       // left it out of the model's volume (model_reach.h), by the same rule.
       if (!reach.has_volume(p.model, p.polygon, scene.lights[l])) continue;
       ++start.count[l];
+      counted.push_back(pi);
       if (const auto it = group_of.find({l, p.model, p.polygon}); it != group_of.end())
         start.in_shadow[it->second] = 1;
     }
+    start.model_counts[l] = count_by_model(index, counted);
   });
   return start;
 }

@@ -5,6 +5,7 @@
 // inside one or several shadow volumes, or on one's boundary.
 #include <geometry/exact/predicates.h>
 #include <geometry/oracle/scene_index.h>
+#include <geometry/oracle/transmittance.h>
 #include <geometry/volumes/shadow_volume.h>
 
 #include <cstdint>
@@ -37,6 +38,11 @@ struct EyeStart {
   /// the perturbed eye's side of every side polygon through the eye, which
   /// `planes` lists.
   std::vector<int> count;
+  /// Per light: `count` split by model, the models with a nonzero count in
+  /// increasing order (their counts sum to count[l]). A renderer that keeps
+  /// tinted models' counts apart (coloured shadows, transmittance.h) starts
+  /// each from here.
+  std::vector<std::vector<ModelCount>> model_counts;
   /// Per twisted group (ShadowVolumes::twisted): In_Shadow_Start, 0 or 1,
   /// at the same (perturbed) eye.
   std::vector<std::uint8_t> in_shadow;

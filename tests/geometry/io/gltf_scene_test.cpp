@@ -231,6 +231,32 @@ TEST(GltfIo, MaterialBaseColorFactorIsTheModelColor) {
   EXPECT_EQ(parse_gltf_scene(g.gltf(), "m.gltf").models[0].color, (Rgb{0.25, 0.5, 0.75}));
 }
 
+// KHR_materials_transmission: T = transmissionFactor × baseColorFactor
+// (docs/transmittance.md); no extension or factor 0: opaque. A required
+// extension is accepted; a bad factor, or a base colour above 1 on a
+// transmitting material, is refused with its path.
+TEST(GltfIo, MaterialTransmissionTimesBaseColorIsTheTransmittance) {
+  GltfFixture g = triangle_scene();
+  g.doc["materials"] = {
+      {{"pbrMetallicRoughness", {{"baseColorFactor", {0.25, 0.5, 1, 1}}}},
+       {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}}};
+  g.doc["meshes"][0]["primitives"][0]["material"] = 0;
+  g.doc["extensionsUsed"] = {"KHR_materials_transmission"};
+  g.doc["extensionsRequired"] = {"KHR_materials_transmission"};
+  EXPECT_EQ(parse_gltf_scene(g.gltf(), "m.gltf").models[0].transmittance, (Rgb{0.125, 0.25, 0.5}));
+  g.doc["materials"][0]["extensions"]["KHR_materials_transmission"] = Json::object();
+  EXPECT_EQ(parse_gltf_scene(g.gltf(), "m.gltf").models[0].transmittance, (Rgb{0, 0, 0}));
+  g.doc["materials"][0]["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 1.5;
+  EXPECT_EQ(error_of(g.gltf(), "m.gltf"),
+            "m.gltf: materials[0].extensions.KHR_materials_transmission.transmissionFactor: "
+            "must be in [0, 1]");
+  g.doc["materials"][0]["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 1;
+  g.doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.5, 2, 0.5, 1};
+  EXPECT_EQ(error_of(g.gltf(), "m.gltf"),
+            "m.gltf: materials[0].pbrMetallicRoughness.baseColorFactor[1]: must be in [0, 1] "
+            "for a transmitting material (it tints the light through it)");
+}
+
 TEST(GltfIo, GlbAndExternalBinLoadTheSameScene) {
   const GltfFixture g = lit_scene();
   const fs::path dir = temp_dir("external");

@@ -451,3 +451,40 @@ TEST(SceneIo, SpecularAndShininess) {
 
 }  // namespace
 }  // namespace umbra::geometry
+
+namespace umbra::geometry {
+namespace {
+
+TEST(SceneIo, TransmittanceIsAFractionPerChannelAndNeverWithAnAreaLight) {
+  const std::string tinted =
+      R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]},
+           "transmittance": [0.75, 0.5, 0]}])";
+  const Scene s = parse_scene(scene("[]", tinted), kScenes / "s.json");
+  EXPECT_EQ(s.models[0].transmittance, (Rgb{0.75, 0.5, 0}));
+  EXPECT_TRUE(has_transmittance(s));
+  const Scene plain = parse_scene(scene("[]"), kScenes / "s.json");
+  EXPECT_EQ(plain.models[0].transmittance, (Rgb{0, 0, 0}));
+  EXPECT_FALSE(has_transmittance(plain));
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]],
+                                          "faces": [[0,1,2]]}, "transmittance": [0.5, 1.25, 0]}])")),
+            kFile + ": models[0].transmittance[1]: must be in [0, 1] (a fraction of the light)");
+  EXPECT_EQ(scene_error(scene("[]", R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]],
+                                          "faces": [[0,1,2]]}, "transmittance": [0.5, -1, 0]}])")),
+            kFile + ": models[0].transmittance[1]: must be >= 0");
+  const std::string area =
+      R"([{"type": "point", "position": [0, 5, 0]},
+          {"type": "area", "vertices": [[0, 4, 0], [1, 4, 0], [0, 4, 1]]}])";
+  EXPECT_EQ(scene_error(scene(area, tinted)),
+            kFile +
+                ": lights[1]: an area light in a scene whose models[0] has a transmittance: "
+                "coloured soft shadows are not defined (transmittance applies to point and "
+                "directional lights; docs/transmittance.md)");
+  // A tinted model that casts no shadow tints nothing: the area light stays.
+  const std::string no_cast =
+      R"([{"polygons": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,2]]},
+           "transmittance": [0.75, 0.5, 0], "casts_shadows": false}])";
+  EXPECT_FALSE(has_transmittance(parse_scene(scene(area, no_cast), kScenes / "s.json")));
+}
+
+}  // namespace
+}  // namespace umbra::geometry
