@@ -37,6 +37,7 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"light_pixels", stats.light_pixels},
       {"twisted_polygons", stats.twisted_polygons},
       {"eye_degenerate_lights", stats.eye_degenerate_lights},
+      {"tint_channels", stats.tint_channels},
       {"boundary_edges", stats.boundary_edges},
       {"non_manifold_edges", stats.non_manifold_edges},
       {"degenerate_polygons", stats.degenerate_polygons},
@@ -103,6 +104,13 @@ nlohmann::ordered_json validation_json(const ValidateRun& run,
         {"false_shadowed", light.false_shadowed},
         {"wrong_range", light.wrong_range},
     });
+    if (light.tinted)
+      j["lights"].back()["transmittance"] = {
+          {"mismatches", light.tau_mismatches},
+          {"max_error", light.tau_max_error},
+          {"mean_error", light.tau_mean_error()},
+          {"tolerance", raster::kVisibilityTolerance},
+      };
   }
   j["total_mismatches"] = report.total_mismatches();
   return j;

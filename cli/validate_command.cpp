@@ -68,6 +68,12 @@ void print_summary(std::FILE* out, const ValidateArgs& args, const std::optional
                "({} false lit, {} false shadowed, {} range)\n",
                i, l.compared, l.boundary, l.mismatches, l.false_lit, l.false_shadowed,
                l.wrong_range);
+    if (l.tinted)
+      fmt::print(out,
+                 "light {} transmittance: {} samples with |tau - tau_exact| > {:g} in a channel; "
+                 "largest error {:.3g}, mean {:.3g}\n",
+                 i, l.tau_mismatches, raster::kVisibilityTolerance, l.tau_max_error,
+                 l.tau_mean_error());
   }
   const std::uint64_t total = report.total_mismatches();
   fmt::print(

@@ -6,11 +6,19 @@
 
 namespace umbra::raster::exr_layout {
 
-std::vector<std::string> channel_names(std::size_t lights, std::span<const std::uint8_t> soft) {
+std::string transmittance_channel(std::size_t light, int c) {
+  return fmt::format("transmittance.{}.{}", light, "RGB"[c]);
+}
+
+std::vector<std::string> channel_names(std::size_t lights, std::span<const std::uint8_t> soft,
+                                       bool tinted) {
   std::vector<std::string> names = {"R", "G", "B"};
   for (std::size_t i = 0; i < lights; ++i)
     names.push_back((i < soft.size() && soft[i] ? "visibility." : "shadow.") + std::to_string(i));
   for (std::size_t i = 0; i < lights; ++i) names.push_back(fmt::format("count.{}", i));
+  if (tinted)
+    for (std::size_t i = 0; i < lights; ++i)
+      for (int c = 0; c < 3; ++c) names.push_back(transmittance_channel(i, c));
   names.push_back("depth");
   return names;
 }

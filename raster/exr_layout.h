@@ -17,8 +17,13 @@ inline constexpr const char* kJobAttribute = "umbra:job";
 /// The EXR channel names of a frame with `lights` lights, in umbra's order:
 /// R, G, B, one value channel a light (shadow.<i>, or visibility.<i> where
 /// soft[i] is 1: an area light; `soft` may be shorter, the rest hard),
-/// count.<i>..., depth.
-std::vector<std::string> channel_names(std::size_t lights, std::span<const std::uint8_t> soft = {});
+/// count.<i>..., with `tinted` transmittance.<i>.R, .G, .B per light, then
+/// depth.
+std::vector<std::string> channel_names(std::size_t lights, std::span<const std::uint8_t> soft = {},
+                                       bool tinted = false);
+
+/// The name of light i's τ channel c (0 R, 1 G, 2 B).
+std::string transmittance_channel(std::size_t light, int c);
 
 /// The light index of a channel named exactly `prefix<i>` (i written
 /// without leading zeros), or -1.

@@ -68,6 +68,24 @@ std::vector<util::PixelPlane> Frame::shadow_planes() const {
   return planes;
 }
 
+void Frame::enable_transmittance() {
+  tinted = true;
+  transmittance_values.assign(3 * windows.size(), 1.0f);
+}
+
+util::PixelPlane Frame::transmittance_plane(std::size_t light, int c) const {
+  return whole_plane(*this, light,
+                     [this, c](std::size_t l, std::size_t p) { return transmittance(l, p, c); });
+}
+
+std::vector<util::PixelPlane> Frame::transmittance_planes() const {
+  std::vector<util::PixelPlane> planes;
+  if (!tinted) return planes;
+  for (std::size_t l = 0; l < lights(); ++l)
+    for (int c = 0; c < 3; ++c) planes.push_back(transmittance_plane(l, c));
+  return planes;
+}
+
 std::vector<util::PixelPlane> Frame::count_planes() const {
   std::vector<util::PixelPlane> planes;
   for (std::size_t l = 0; l < lights(); ++l) planes.push_back(count_plane(l));

@@ -71,6 +71,22 @@ struct Frame {
   /// count.<i> is 0 (no depth count decides it). Empty: no area light.
   std::vector<std::uint8_t> soft;
   bool is_soft(std::size_t light) const { return light < soft.size() && soft[light] != 0; }
+  /// Set (enable_transmittance) when the scene has a tinted casting model
+  /// (geometry::has_transmittance): then transmittance_values holds τ(P)
+  /// per light, channel and window slot, at 3·slot + c (c: 0 R, 1 G, 2 B),
+  /// written as `transmittance.<i>.R/.G/.B` (docs/transmittance.md): 1
+  /// lit, 0 out of range, Π T through tinted polygons. Empty otherwise.
+  bool tinted = false;
+  util::PixelPlane transmittance_values;
+  /// Sets `tinted` and fills transmittance_values with 1 (lit background).
+  void enable_transmittance();
+  /// τ of light `light` at pixel `pixel`, channel c, inside its window or
+  /// not (outside: 0 where a surface is hit, out of range; 1 on background).
+  float transmittance(std::size_t light, std::size_t pixel, int c) const {
+    const std::size_t k = slot(light, pixel);
+    if (k != LightWindows::npos) return transmittance_values[3 * k + static_cast<std::size_t>(c)];
+    return hit[pixel] ? 0.0f : 1.0f;
+  }
   /// 1 where the sample ray hits a surface. Outside a light's window a
   /// sample is out of range where this is 1 and lit background where it is
   /// 0 (a depth may round to infinity as a float and still be a hit).
@@ -113,7 +129,19 @@ struct Frame {
   /// Every light's shadow.<i> and count.<i> planes, in light order: what
   /// the EXR holds, whatever the windows (for comparing two frames).
   std::vector<util::PixelPlane> shadow_planes() const;
+  /// Light `light`'s τ channel c (0 R, 1 G, 2 B) as a whole plane; every
+  /// light's three, light by light (empty unless tinted).
+  util::PixelPlane transmittance_plane(std::size_t light, int c) const;
+  std::vector<util::PixelPlane> transmittance_planes() const;
   std::vector<util::PixelPlane> count_planes() const;
 };
+
+/// What every method sets on its frame before storing a sample: Frame::soft
+/// from the scene's area lights and, for a scene with transmittance
+/// (geometry::has_transmittance), the transmittance planes.
+inline void describe_lights(const geometry::Scene& scene, Frame& frame) {
+  frame.soft = soft_lights(scene);
+  if (geometry::has_transmittance(scene)) frame.enable_transmittance();
+}
 
 }  // namespace umbra::raster

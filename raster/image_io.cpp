@@ -103,7 +103,8 @@ void write_beauty_png(const Frame& frame, const fs::path& path) {
 void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
                const TileLabel* tile = nullptr) {
   const std::size_t lights = frame.lights();
-  const std::size_t channels = 3 + 2 * lights + 1;
+  const std::size_t tau = frame.tinted ? 3 * lights : 0;  // transmittance.<i>.R/G/B
+  const std::size_t channels = 3 + 2 * lights + tau + 1;
 
   codec::Header header;
   header.width = header.full_width = frame.width;
@@ -112,7 +113,7 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
   header.full_height = frame.height;
   // Our order; OpenEXR itself stores channels sorted by name, which is why
   // read_shadow_channels looks them up by name.
-  header.channels = channel_names(lights, frame.soft);
+  header.channels = channel_names(lights, frame.soft, frame.tinted);
   // No time stamp (DateTime empty): the same render gives the same bytes
   // (OpenEXR writers otherwise record the current time).
   header.attributes = {{"oiio:ColorSpace", "Linear"}, {"compression", "zip"}, {"DateTime", ""}};
@@ -147,6 +148,7 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
               const float outside = frame.hit[p] ? kShadowOutOfRange : kShadowLit;
               std::fill(px + 3, px + 3 + lights, outside);
               std::fill(px + 3 + lights, px + 3 + 2 * lights, 0.0f);
+              std::fill(px + 3 + 2 * lights, px + 3 + 2 * lights + tau, frame.hit[p] ? 0.0f : 1.0f);
             }
             px[channels - 1] = frame.depth[p];  // +inf on background, kept as is
           }
@@ -158,6 +160,11 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
               float* px = &row[static_cast<std::size_t>(x) * channels];
               px[3 + l] = frame.shadow_values[from + static_cast<std::size_t>(x - r.x0)];
               px[3 + lights + l] = frame.count_values[from + static_cast<std::size_t>(x - r.x0)];
+              if (tau)
+                for (std::size_t c = 0; c < 3; ++c)
+                  px[3 + 2 * lights + 3 * l + c] =
+                      frame.transmittance_values[3 * (from + static_cast<std::size_t>(x - r.x0)) +
+                                                 c];
             }
           }
         }
@@ -171,11 +178,12 @@ void check_frame(const Frame& frame) {
     throw std::invalid_argument(
         fmt::format("write_frame: empty frame {}x{}", frame.width, frame.height));
   const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
-  const bool ok = frame.beauty.size() == n * 3 && frame.depth.size() == n &&
-                  frame.hit.size() == n && frame.windows.width() == frame.width &&
-                  frame.windows.height() == frame.height &&
-                  frame.shadow_values.size() == frame.windows.size() &&
-                  frame.count_values.size() == frame.windows.size();
+  const bool ok =
+      frame.beauty.size() == n * 3 && frame.depth.size() == n && frame.hit.size() == n &&
+      frame.windows.width() == frame.width && frame.windows.height() == frame.height &&
+      frame.shadow_values.size() == frame.windows.size() &&
+      frame.count_values.size() == frame.windows.size() &&
+      frame.transmittance_values.size() == (frame.tinted ? 3 * frame.windows.size() : 0);
   if (!ok)
     throw std::invalid_argument(fmt::format(
         "write_frame: buffer sizes do not match {}x{} with {} lights ({} beauty floats, "
@@ -209,7 +217,7 @@ void write_frame_tile(const Frame& frame, RowRange rows, const TileLabel& tile,
 }
 
 ShadowChannels shadow_channels(const Frame& frame) {
-  ShadowChannels out{frame.width, frame.height, {}, {}};
+  ShadowChannels out{frame.width, frame.height, {}, {}, frame.transmittance_planes()};
   out.shadow.reserve(frame.lights());
   for (std::size_t l = 0; l < frame.lights(); ++l) {
     out.shadow.push_back(frame.shadow_plane(l));
@@ -296,15 +304,45 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   result.height = spec.height;
   result.shadow.assign(by_light.size(), util::PixelPlane(n));
   for (const auto& [index, soft] : soft_by_light) result.soft.push_back(soft);
-  // The shadow channels a block of rows at a time, so that other channels
-  // (or however many) cost no memory. EXR sorts channels by name, so in
+  // Every channel read, by its place in the file, with the plane it fills.
+  std::map<int, util::PixelPlane*> wanted;
+  {
+    std::size_t light = 0;
+    for (const auto& [index, channel] : by_light) wanted[channel] = &result.shadow[light++];
+  }
+  // transmittance.<i>.R/G/B: all of them for every light, or none.
+  std::map<std::pair<long, int>, int> tau_channels;
+  for (int c = 0; c < static_cast<int>(spec.channels.size()); ++c) {
+    const std::string& channel = spec.channels[c];
+    if (channel.size() < 3 || channel[channel.size() - 2] != '.') continue;
+    const auto rgb = std::string_view("RGB").find(channel.back());
+    if (rgb == std::string_view::npos) continue;
+    const long index = light_channel_index(channel.substr(0, channel.size() - 2), "transmittance.");
+    if (index >= 0) tau_channels[{index, static_cast<int>(rgb)}] = c;
+  }
+  if (!tau_channels.empty()) {
+    result.transmittance.assign(3 * by_light.size(), util::PixelPlane(n));
+    for (std::size_t l = 0; l < by_light.size(); ++l)
+      for (int c = 0; c < 3; ++c) {
+        const auto it = tau_channels.find({static_cast<long>(l), c});
+        if (it == tau_channels.end())
+          throw util::InputError(where, fmt::format("has transmittance channels but not {}",
+                                                    exr_layout::transmittance_channel(l, c)));
+        wanted[it->second] = &result.transmittance[3 * l + static_cast<std::size_t>(c)];
+      }
+    if (tau_channels.size() != 3 * by_light.size())
+      throw util::InputError(where,
+                             "has transmittance channels for lights the image has no shadow or "
+                             "visibility channel of");
+  }
+  // The channels a block of rows at a time, so that other channels (or
+  // however many) cost no memory. EXR sorts channels by name, so in
   // umbra's files they lie together and one read takes them all; a file
   // that scatters them among others is read a channel at a time.
-  const auto by_channel = [](const auto& a, const auto& b) { return a.second < b.second; };
-  const int first = std::min_element(by_light.begin(), by_light.end(), by_channel)->second;
-  const int last = std::max_element(by_light.begin(), by_light.end(), by_channel)->second;
+  const int first = wanted.begin()->first;
+  const int last = wanted.rbegin()->first;
   const std::size_t span = static_cast<std::size_t>(last - first + 1);
-  const bool together = span <= 2 * by_light.size();
+  const bool together = span <= 2 * wanted.size();
   const std::size_t channels_read = together ? span : 1;
   constexpr std::size_t kBlockFloats = std::size_t{1} << 22;  // 16 MB
   const int rows =
@@ -320,12 +358,10 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
     const std::size_t base = static_cast<std::size_t>(y0) * width;
     const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * width;
     if (together) read(y0, y1, first, last + 1);
-    std::size_t light = 0;
-    for (const auto& [index, channel] : by_light) {
-      util::PixelPlane& plane = result.shadow[light++];
+    for (const auto& [channel, plane] : wanted) {
       if (!together) read(y0, y1, channel, channel + 1);
       const std::size_t c = together ? static_cast<std::size_t>(channel - first) : 0;
-      for (std::size_t p = 0; p < pixels; ++p) plane[base + p] = block[p * channels_read + c];
+      for (std::size_t p = 0; p < pixels; ++p) (*plane)[base + p] = block[p * channels_read + c];
     }
   }
   return result;

@@ -59,6 +59,9 @@ struct ShadowChannels {
   /// light (soft[i] = 1) visibility.<i>.
   std::vector<util::PixelPlane> shadow;
   std::vector<std::uint8_t> soft;
+  /// transmittance.<i>.R, .G, .B, light by light (3 per light), where the
+  /// file has them (a scene with a tinted model); else empty.
+  std::vector<util::PixelPlane> transmittance;
 };
 ShadowChannels read_shadow_channels(const std::filesystem::path& path);
 

@@ -1,3 +1,4 @@
+#include <geometry/oracle/transmittance.h>
 #include <geometry/oracle/visible_fraction.h>
 #include <raster/pixel_sample.h>
 #include <raster/shading.h>
@@ -22,7 +23,7 @@ float shadow_value(ShadowClass c) {
 }  // namespace
 
 PixelSample::PixelSample(std::size_t every)
-    : lights(every), classes(every), counts(every), visibility(every, 1.0f) {
+    : lights(every), classes(every), counts(every), visibility(every, 1.0f), tau(every) {
   for (std::size_t l = 0; l < every; ++l) lights[l] = static_cast<std::uint32_t>(l);
 }
 
@@ -36,6 +37,20 @@ void decide_area_light(const geometry::SceneIndex& index, const geometry::Sample
   sample.counts[k] = 0;
 }
 
+void decide_by_oracle(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
+                      const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
+                      bool tinted, PixelSample& sample) {
+  if (tinted) {
+    const geometry::TransmittanceAnswer answer =
+        geometry::transmittance_sample(index, ray, hit, light);
+    sample.classes[k] = answer.shadow.cls;
+    sample.tau[k] = answer.tau;
+  } else {
+    sample.classes[k] = geometry::classify_sample(index, ray, hit, light).cls;
+  }
+  sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
+}
+
 void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
                   const PixelSample& sample, std::size_t pixel, Frame& frame) {
   const Vec3 point = ray.origin + sample.t * ray.direction;
@@ -47,8 +62,10 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
   // allocation per pixel.
   thread_local std::vector<std::uint32_t> lit;
   thread_local std::vector<float> fraction;
+  thread_local std::vector<geometry::Rgb> tint;
   lit.clear();
   fraction.clear();
+  tint.clear();
   const auto w = static_cast<std::size_t>(frame.width);
   const int i = static_cast<int>(pixel % w), j = static_cast<int>(pixel / w);
   for (std::size_t k = 0; k < sample.lights.size(); ++k) {
@@ -62,17 +79,34 @@ void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,
       }
       frame.shadow_values[slot] = v;
       frame.count_values[slot] = 0.0f;
+      if (frame.tinted) tint.push_back({1, 1, 1});  // never with tinted models (scene refuses)
       continue;
     }
-    if (sample.classes[k] == ShadowClass::lit) {
+    const ShadowClass cls = sample.classes[k];
+    if (frame.tinted) {
+      // τ: 1 lit, 0 out of range, the method's τ (or 0) shadowed.
+      const geometry::Rgb tau = cls == ShadowClass::lit ? geometry::Rgb{1, 1, 1}
+                                : cls == ShadowClass::shadowed && k < sample.tau.size()
+                                    ? sample.tau[k]
+                                    : geometry::Rgb{0, 0, 0};
+      float* const out = &frame.transmittance_values[3 * slot];
+      out[0] = static_cast<float>(tau.r);
+      out[1] = static_cast<float>(tau.g);
+      out[2] = static_cast<float>(tau.b);
+      if (cls == ShadowClass::lit || (cls == ShadowClass::shadowed && geometry::tinted(tau))) {
+        lit.push_back(l);
+        fraction.push_back(1.0f);
+        tint.push_back(tau);
+      }
+    } else if (cls == ShadowClass::lit) {
       lit.push_back(l);
       fraction.push_back(1.0f);
     }
-    frame.shadow_values[slot] = shadow_value(sample.classes[k]);
+    frame.shadow_values[slot] = shadow_value(cls);
     frame.count_values[slot] = static_cast<float>(sample.counts[k]);
   }
-  const geometry::Rgb c =
-      shade(scene, sample.look, point, normal, geometry::normalize(-ray.direction), lit, fraction);
+  const geometry::Rgb c = shade(scene, sample.look, point, normal,
+                                geometry::normalize(-ray.direction), lit, fraction, tint);
   frame.beauty[3 * pixel + 0] = static_cast<float>(c.r);
   frame.beauty[3 * pixel + 1] = static_cast<float>(c.g);
   frame.beauty[3 * pixel + 2] = static_cast<float>(c.b);
@@ -98,6 +132,8 @@ void store_background(std::size_t pixel, Frame& frame, std::span<const std::uint
     const std::size_t slot = frame.windows.inside(l, i, j);
     frame.shadow_values[slot] = kShadowLit;
     frame.count_values[slot] = 0.0f;
+    if (frame.tinted)
+      for (std::size_t c = 0; c < 3; ++c) frame.transmittance_values[3 * slot + c] = 1.0f;
   }
   frame.depth[pixel] = kDepthBackground;
   frame.hit[pixel] = 0;

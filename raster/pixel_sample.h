@@ -33,6 +33,11 @@ struct PixelSample {
   /// lit where V > 0, shadowed where V = 0; counts[k] 0). Unused for the
   /// other lights.
   std::vector<float> visibility;
+  /// Frames with transmittance (Frame::tinted): for a point or directional
+  /// light whose class is shadowed, τ(P) (docs/transmittance.md); 0 where
+  /// the light is stopped. Methods that compute no τ leave it empty, and
+  /// their shadowed samples get τ 0 (the models taken as opaque).
+  std::vector<geometry::Rgb> tau;
 };
 
 /// Area light `light`, entry k of the sample's list, at the sample of `ray`
@@ -43,8 +48,17 @@ void decide_area_light(const geometry::SceneIndex& index, const geometry::Sample
                        const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
                        geometry::FractionPrecision precision, PixelSample& sample);
 
+/// Point or directional light `light`, entry k of the sample's list, by
+/// the oracle: classify_sample, count 1 where shadowed; with `tinted` (the
+/// frame has transmittance) transmittance_sample, which also gives tau[k].
+void decide_by_oracle(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
+                      const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
+                      bool tinted, PixelSample& sample);
+
 /// Writes `sample` to pixel `pixel` of `frame`: beauty (ambient plus the lit
-/// lights, the normal turned to face the eye), shadow.<i>, count.<i>, depth.
+/// lights and the lights shining through tinted polygons, the normal turned
+/// to face the eye), shadow.<i>, count.<i>, transmittance.<i> in a tinted
+/// frame, depth.
 /// Every light the sample lists must have the pixel in its window, and
 /// every light whose window holds the pixel must be listed.
 void store_sample(const geometry::Scene& scene, const geometry::SampleRay& ray,

@@ -39,6 +39,14 @@ Frame render_linear(const geometry::Scene& scene, const RenderOptions& options,
   // input for them, not a render with silently wrong (or no) answers.
   if (options.method == Method::map) check_float_range(scene, "map");
   if (options.method == Method::ray) check_float_range(scene, "ray");
+  // The scene loader refuses these (docs/transmittance.md); a scene built
+  // in code must not reach a method that has no answer for them.
+  if (geometry::has_transmittance(scene))
+    for (const geometry::Light& light : scene.lights)
+      if (light.type == geometry::LightType::area)
+        throw std::invalid_argument(
+            "render: an area light in a scene with a tinted model (coloured soft shadows are not "
+            "defined)");
   RenderStats local;
   RenderStats& s = stats ? *stats : local;
   s = RenderStats{};

@@ -127,6 +127,10 @@ struct RenderStats {
   /// touching a casting polygon's edge): the oracle decides every sample of
   /// these lights; the other lights keep the scanline's answers.
   std::uint64_t eye_degenerate_lights = 0;
+  /// Method::volume in a scene with transmittance: the depth counts kept
+  /// besides one per light, one per (light, tinted model with a volume for
+  /// it) (raster/methods/tint_channels.h).
+  std::uint64_t tint_channels = 0;
   std::uint64_t pixels = 0;
   /// How the models' edges are shared (geometry::edge_topology), summed.
   std::uint64_t boundary_edges = 0;

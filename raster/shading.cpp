@@ -27,7 +27,7 @@ Vec3 area_light_centre(const Light& light) {
 
 Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
           const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit,
-          std::span<const float> visible) {
+          std::span<const float> visible, std::span<const Rgb> tint) {
   const Rgb& color = look.color;
   const bool glossy = look.specular.r > 0 || look.specular.g > 0 || look.specular.b > 0;
   Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
@@ -51,9 +51,11 @@ Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& poi
       const Vec3 h = normalize(l + to_eye);
       highlight = std::pow(std::max(0.0, dot(normal, h)), look.shininess);
     }
-    out.r += light.intensity.r * factor * (color.r * cosine + look.specular.r * highlight);
-    out.g += light.intensity.g * factor * (color.g * cosine + look.specular.g * highlight);
-    out.b += light.intensity.b * factor * (color.b * cosine + look.specular.b * highlight);
+    // τ per channel (exactly 1 untinted: x · 1 is x, the same bits).
+    const Rgb t = tint.empty() ? Rgb{1, 1, 1} : tint[k];
+    out.r += light.intensity.r * factor * t.r * (color.r * cosine + look.specular.r * highlight);
+    out.g += light.intensity.g * factor * t.g * (color.g * cosine + look.specular.g * highlight);
+    out.b += light.intensity.b * factor * t.b * (color.b * cosine + look.specular.b * highlight);
   }
   return out;
 }

@@ -34,10 +34,15 @@ struct SurfaceLook {
 /// V(P) (docs/soft-shadows.md: V times the unoccluded light of the centre).
 /// `visible` is empty (every listed light wholly visible) or lists one
 /// factor per entry of `lit`.
+///
+/// `tint` is empty or lists one τ per entry of `lit`: a light shining
+/// through tinted polygons (docs/transmittance.md) adds its diffuse light
+/// and its highlight times τ, channel by channel. Such a light is listed
+/// although its shadow.<i> says shadowed.
 geometry::Rgb shade(const geometry::Scene& scene, const SurfaceLook& look,
                     const geometry::Vec3& point, const geometry::Vec3& normal,
                     const geometry::Vec3& to_eye, std::span<const std::uint32_t> lit,
-                    std::span<const float> visible = {});
+                    std::span<const float> visible = {}, std::span<const geometry::Rgb> tint = {});
 
 /// Where an area light shines from for shading: its vertices' centroid.
 geometry::Vec3 area_light_centre(const geometry::Light& light);

@@ -36,6 +36,7 @@ Frame downsample(const Frame& fine, int factor) {
     rects.push_back(coarse_window(fine.windows.rect(l), factor, w, h));
   Frame out(w, h, LightWindows(w, h, std::move(rects)));
   out.soft = fine.soft;  // an area light's values stay visible fractions
+  if (fine.tinted) out.enable_transmittance();
   const int centre = factor / 2;
   const float weight = 1.0f / static_cast<float>(factor * factor);
   for (int j = 0; j < h; ++j) {
@@ -58,6 +59,9 @@ Frame downsample(const Frame& fine, int factor) {
         const std::size_t from = fine.windows.index(l, fi, fj);
         out.shadow_values[slot] = fine.shadow_values[from];
         out.count_values[slot] = fine.count_values[from];
+        if (fine.tinted)
+          for (std::size_t c = 0; c < 3; ++c)
+            out.transmittance_values[3 * slot + c] = fine.transmittance_values[3 * from + c];
       }
       out.depth[p] = fine.depth[q];
       out.hit[p] = fine.hit[q];

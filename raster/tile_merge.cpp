@@ -39,6 +39,7 @@ struct TilePart {
   RowRange rows;
   std::size_t lights = 0;
   std::vector<std::uint8_t> soft;  ///< per light: 1 for an area light (visibility.<i>)
+  bool tinted = false;             ///< transmittance.<i>.R/G/B per light
   std::vector<int> destination;    ///< per file channel: its place in channel_names
 };
 
@@ -68,7 +69,11 @@ TilePart open_tile(const fs::path& path) {
       part.label.count == 0 || part.label.index >= part.label.count)
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (no umbra:tile I/N)");
   part.label.job = spec.attribute(kJobAttribute);
-  if (spec.deep || spec.depth > 1 || nchannels < 4 || (nchannels - 4) % 2 != 0)
+  // Two value channels a light, five with transmittance.<i>.R/G/B.
+  part.tinted = std::find(spec.channels.begin(), spec.channels.end(),
+                          exr_layout::transmittance_channel(0, 0)) != spec.channels.end();
+  const int per_light = part.tinted ? 5 : 2;
+  if (spec.deep || spec.depth > 1 || nchannels < 4 || (nchannels - 4) % per_light != 0)
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (its channels)");
   part.width = spec.full_width;
   part.height = spec.full_height;
@@ -90,7 +95,7 @@ TilePart open_tile(const fs::path& path) {
                                         part.label.index, part.label.count, spec.y,
                                         last_pixel(spec.y, spec.height) + 1, part.rows.begin,
                                         part.rows.end, part.height));
-  part.lights = static_cast<std::size_t>(nchannels - 4) / 2;
+  part.lights = static_cast<std::size_t>((nchannels - 4) / per_light);
   // An area light's value channel is visibility.<i> (frame.h).
   part.soft.assign(part.lights, 0);
   for (int c = 0; c < nchannels; ++c) {
@@ -98,7 +103,7 @@ TilePart open_tile(const fs::path& path) {
     if (l >= 0 && static_cast<std::size_t>(l) < part.lights)
       part.soft[static_cast<std::size_t>(l)] = 1;
   }
-  const std::vector<std::string> names = channel_names(part.lights, part.soft);
+  const std::vector<std::string> names = channel_names(part.lights, part.soft, part.tinted);
   if (static_cast<std::size_t>(nchannels) != names.size())
     throw InputError(where, "is not a tile of `umbra render --tile I/N` (its channels)");
   for (int c = 0; c < nchannels; ++c) {
@@ -136,6 +141,7 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
     if (part.width != first.width || part.height != first.height) differs("the image size");
     if (part.lights != first.lights) differs("the number of lights");
     if (part.soft != first.soft) differs("which lights are area lights");
+    if (part.tinted != first.tinted) differs("whether it has transmittance channels");
     if (by_index[part.label.index] != nullptr)
       throw InputError(part.path.string(),
                        fmt::format("tile {}/{} is also {}", part.label.index, part.label.count,
@@ -150,7 +156,8 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
                                    k, first.label.count));
 
   const std::uint64_t pixels = static_cast<std::uint64_t>(first.width) * first.height;
-  const std::uint64_t bytes = pixels * (4 + 2 * static_cast<std::uint64_t>(first.lights)) * 4;
+  const std::uint64_t bytes =
+      pixels * (4 + (first.tinted ? 5 : 2) * static_cast<std::uint64_t>(first.lights)) * 4;
   if (bytes > max_bytes)
     throw InputError(first.path.string(),
                      fmt::format("the merged {}x{} frame with {} lights needs ~{:.1f} GiB, limit "
@@ -160,6 +167,7 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
                                  static_cast<double>(max_bytes) / (1ull << 30)));
   Frame frame(first.width, first.height, first.lights);
   frame.soft = first.soft;
+  if (first.tinted) frame.enable_transmittance();
   const std::size_t width = static_cast<std::size_t>(first.width);
   const std::size_t lights = first.lights;
   for (TilePart& part : parts) {
@@ -182,6 +190,9 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
             frame.shadow_values[frame.slot(d - 3, p)] = v;  // whole windows: always a slot
           else if (d < 3 + 2 * lights)
             frame.count_values[frame.slot(d - 3 - lights, p)] = v;
+          else if (first.tinted && d < 3 + 5 * lights)
+            frame.transmittance_values[3 * frame.slot((d - 3 - 2 * lights) / 3, p) +
+                                       (d - 3 - 2 * lights) % 3] = v;
           else
             frame.depth[p] = v;
         }

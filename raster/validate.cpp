@@ -1,5 +1,6 @@
 // umbra validate: every checked pixel's shadow.<i> against the oracle.
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/transmittance.h>
 #include <geometry/oracle/visible_fraction.h>
 #include <raster/frame.h>
 #include <raster/light_windows.h>
@@ -73,7 +74,7 @@ std::uint64_t ValidationReport::total_mismatches() const {
 namespace {
 
 void check_fits(const std::string& where, int width, int height, std::size_t lights,
-                std::span<const std::uint8_t> soft, const ShadowChannels& image) {
+                std::span<const std::uint8_t> soft, bool tinted, const ShadowChannels& image) {
   if (image.width != width || image.height != height) {
     throw util::InputError(where, "the image is " + std::to_string(image.width) + "x" +
                                       std::to_string(image.height) +
@@ -95,11 +96,19 @@ void check_fits(const std::string& where, int width, int height, std::size_t lig
                              soft[l] ? "an area" : "a point or directional",
                              soft[l] ? "visibility" : "shadow", l));
   }
+  if (tinted && image.transmittance.empty())
+    throw util::InputError(where,
+                           "the scene has a tinted model (transmittance) but the image has no "
+                           "transmittance.<i>.R/G/B channels; render it again with -o NAME.exr");
+  if (!tinted && !image.transmittance.empty())
+    throw util::InputError(where,
+                           "the image has transmittance channels but the scene has no tinted "
+                           "model; was it rendered from another scene?");
   const std::size_t total = static_cast<std::size_t>(width) * height;
-  for (const auto& channel : image.shadow) {
-    if (channel.size() != total)
-      throw util::InputError(where, "a shadow channel does not hold one value a pixel");
-  }
+  for (const auto* planes : {&image.shadow, &image.transmittance})
+    for (const auto& channel : *planes)
+      if (channel.size() != total)
+        throw util::InputError(where, "a shadow channel does not hold one value a pixel");
 }
 
 }  // namespace
@@ -116,6 +125,8 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
   truth.boundary.assign(truth.pixels.size() * truth.lights, 0);
   truth.visibility.assign(truth.pixels.size() * truth.lights, 1.0);
   truth.soft = soft_lights(scene);
+  truth.tinted = geometry::has_transmittance(scene);
+  if (truth.tinted) truth.tau.assign(truth.pixels.size() * truth.lights, geometry::Rgb{1, 1, 1});
 
   const geometry::SceneIndex index(scene);
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
@@ -142,6 +153,7 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
       for (std::uint32_t l = 0; l < truth.lights; ++l) {
         if (!windows.rect(l).contains(i, j)) {
           truth.cls[k * truth.lights + l] = ShadowClass::out_of_range;
+          if (truth.tinted) truth.tau[k * truth.lights + l] = {0, 0, 0};
           continue;
         }
         if (truth.soft[l]) {
@@ -149,6 +161,14 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
           truth.visibility[k * truth.lights + l] = v.value;
           truth.cls[k * truth.lights + l] = v.value > 0 ? ShadowClass::lit : ShadowClass::shadowed;
           truth.boundary[k * truth.lights + l] = v.boundary ? 1 : 0;
+          continue;
+        }
+        if (truth.tinted) {
+          const geometry::TransmittanceAnswer answer =
+              geometry::transmittance_sample(index, ray, *hit, l);
+          truth.cls[k * truth.lights + l] = answer.shadow.cls;
+          truth.tau[k * truth.lights + l] = answer.tau;
+          truth.boundary[k * truth.lights + l] = answer.boundary ? 1 : 0;
           continue;
         }
         const geometry::ShadowAnswer answer = geometry::classify_sample(index, ray, *hit, l);
@@ -163,13 +183,15 @@ OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& op
 
 ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& image,
                               const std::string& where) {
-  check_fits(where, truth.width, truth.height, truth.lights, truth.soft, image);
+  check_fits(where, truth.width, truth.height, truth.lights, truth.soft, truth.tinted, image);
   ValidationReport report;
   report.width = image.width;
   report.height = image.height;
   report.lights.resize(truth.lights);
-  for (std::size_t l = 0; l < truth.lights; ++l)
+  for (std::size_t l = 0; l < truth.lights; ++l) {
     report.lights[l].soft = l < truth.soft.size() && truth.soft[l];
+    report.lights[l].tinted = truth.tinted && !report.lights[l].soft;
+  }
   report.mask.assign(static_cast<std::size_t>(image.width) * image.height, -1);
   report.pixels_checked = truth.pixels.size();
   for (std::size_t k = 0; k < truth.pixels.size(); ++k) {
@@ -201,6 +223,26 @@ ValidationReport score_render(const OracleTruth& truth, const ShadowChannels& im
         continue;
       }
       const Mistake m = judge(truth.cls[k * truth.lights + l], image.shadow[l][p]);
+      if (r.tinted) {
+        // τ per channel, the 1e-6 rule; a NaN fails.
+        const geometry::Rgb& t = truth.tau[k * truth.lights + l];
+        const double exact[3] = {t.r, t.g, t.b};
+        double worst = 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const double e =
+              std::fabs(static_cast<double>(image.transmittance[3 * l + c][p]) - exact[c]);
+          worst = e == e ? std::max(worst, e) : 1.0;
+        }
+        r.tau_max_error = std::max(r.tau_max_error, worst);
+        r.tau_sum_error += worst;
+        if (!(worst <= kVisibilityTolerance)) {
+          ++r.tau_mismatches;
+          if (m == Mistake::none) {
+            ++r.mismatches;
+            mark = 2;
+          }
+        }
+      }
       if (m == Mistake::none) continue;
       ++r.mismatches;
       mark = 2;
@@ -222,7 +264,7 @@ ValidationReport validate_render(const geometry::Scene& scene, const ShadowChann
   const std::string where = scene.source.empty() ? "validate" : scene.source.string();
   // A misfit image is refused before the oracle's long run.
   check_fits(where, scene.camera.width, scene.camera.height, scene.lights.size(),
-             soft_lights(scene), image);
+             soft_lights(scene), geometry::has_transmittance(scene), image);
   return score_render(oracle_truth(scene, options), image, where);
 }
 

@@ -33,13 +33,26 @@ struct LightReport {
   bool soft = false;
   double max_error = 0;
   double sum_error = 0;
+  /// A scene with transmittance (transmittance.<i>.R/G/B): scored samples
+  /// whose τ differs from the exact τ(P) by more than
+  /// kVisibilityTolerance in some channel (or is NaN), also counted in
+  /// mismatches; the largest channel error over scored samples, and the
+  /// sum of each sample's largest channel error.
+  bool tinted = false;
+  std::uint64_t tau_mismatches = 0;
+  double tau_max_error = 0;
+  double tau_sum_error = 0;
   /// Scored samples: compared minus boundary.
   std::uint64_t scored() const { return compared - boundary; }
   double mean_error() const { return scored() ? sum_error / static_cast<double>(scored()) : 0.0; }
+  double tau_mean_error() const {
+    return scored() ? tau_sum_error / static_cast<double>(scored()) : 0.0;
+  }
 };
 
-/// DESIGN.md's rule for visible fractions: a sample fails when its value
-/// is further than this from the exact V(P).
+/// DESIGN.md's rule for visible fractions and transmittances: a sample
+/// fails when its value is further than this from the exact V(P) (or, per
+/// channel, τ(P)).
 inline constexpr double kVisibilityTolerance = 1e-6;
 
 struct ValidationReport {
@@ -77,6 +90,11 @@ struct OracleTruth {
   /// + l], the exact V(P) (cls is then lit where V > 0).
   std::vector<std::uint8_t> soft;
   std::vector<double> visibility;
+  /// A scene with transmittance (geometry::has_transmittance): tau[k *
+  /// lights + l] is the exact τ(P) of each point or directional light, and
+  /// `boundary` also marks the samples whose τ has no single value.
+  bool tinted = false;
+  std::vector<geometry::Rgb> tau;
 };
 
 OracleTruth oracle_truth(const geometry::Scene& scene, const ValidateOptions& options);

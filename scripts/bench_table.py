@@ -9,7 +9,8 @@ light) counts recounted alone). A second table sets the volume method
 beside Embree (issue 20): the ray method's frame and the volume frame's
 ratio to it, umbra's visible-surface pass alone (the volume method on the
 scene without lights) against Embree's primary rays (the ray method on
-the same) and against a minimal float z-buffer (bench/zbuffer.h). A third,
+the same) and against a minimal float z-buffer (bench/zbuffer.h). A third
+sets the tinted twin (coloured shadows) beside the opaque frame. A fourth,
 when the run has the night city (UMBRA_BENCH_CITY), sets its many-lamp
 frames beside the one-lamp frame, the plain pass and Embree."""
 import json
@@ -59,6 +60,17 @@ def main(path):
         z = time(mesh, lights, "zbuffer")
         print(f"| {mesh} | {lights} | {t:.0f} | {ray:.0f} | {t / ray:.2f} | {plain:.0f} | "
               f"{primary:.0f} | {plain / primary:.2f} | {z:.0f} | {plain / z:.2f} |")
+
+    tinted = [(mesh, lights) for (mesh, lights, mode) in sorted(median) if mode == "tinted"]
+    if tinted:
+        # Coloured shadows (issue 22): the same scene with both models
+        # tinted against it opaque, in the same run.
+        print()
+        print("| mesh | lights | opaque (ms) | tinted (ms) | tinted / opaque |")
+        print("| --- | --- | --- | --- | --- |")
+        for mesh, lights in tinted:
+            t, c = time(mesh, lights, "shadows"), time(mesh, lights, "tinted")
+            print(f"| {mesh} | {lights} | {t:.0f} | {c:.0f} | {c / t:.2f} |")
 
     city = sorted(lights for (mesh, lights, mode) in median if mesh == "city" and mode == "shadows")
     if city:

@@ -1,5 +1,6 @@
 #include <raster/library_versions.h>
 #include <raster/methods/embree_scene.h>
+#include <raster/methods/ray_transmittance.h>
 #include <util/parallel_for.h>
 
 #include <array>
@@ -38,8 +39,10 @@ using Triangle = std::array<unsigned, 3>;
 /// than it saves on a static scene rendered once.
 constexpr RTCSceneFlags kSceneFlags = RTC_SCENE_FLAG_NONE;
 
+/// `occluded_filter`: null, or the filter of the triangles' occlusion rays.
 RTCScene triangle_scene(RTCDevice device, const std::vector<Float3>& vertices,
-                        const std::vector<Triangle>& triangles) {
+                        const std::vector<Triangle>& triangles,
+                        RTCFilterFunctionN occluded_filter = nullptr) {
   RTCScene scene = rtcNewScene(device);
   if (!scene) return nullptr;
   rtcSetSceneFlags(scene, kSceneFlags);
@@ -56,6 +59,7 @@ RTCScene triangle_scene(RTCDevice device, const std::vector<Float3>& vertices,
       std::memcpy(v, vertices.data(), vertices.size() * sizeof(Float3));
       std::memcpy(t, triangles.data(), triangles.size() * sizeof(Triangle));
     }
+    if (occluded_filter) rtcSetGeometryOccludedFilterFunction(geometry, occluded_filter);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(scene, geometry);  // geometry id 0 in either scene
     rtcReleaseGeometry(geometry);
@@ -66,7 +70,7 @@ RTCScene triangle_scene(RTCDevice device, const std::vector<Float3>& vertices,
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const geometry::SceneIndex& index, unsigned threads) {
+EmbreeScene::EmbreeScene(const geometry::SceneIndex& index, unsigned threads, bool tinted) {
   // One thread count for the whole render: Embree's build threads too.
   const std::string config = "threads=" + std::to_string(util::resolve_threads(threads));
   device_ = rtcNewDevice(config.c_str());
@@ -96,16 +100,23 @@ EmbreeScene::EmbreeScene(const geometry::SceneIndex& index, unsigned threads) {
         const Triangle t{base + polygon[local[0]], base + polygon[local[1]],
                          base + polygon[local[2]]};
         all.push_back(t);
-        if (p.casts_shadows) casting.push_back(t);
+        if (p.casts_shadows) {
+          casting.push_back(t);
+          caster_polygon_.push_back(i);
+        }
         entries_.push_back(surface_entry(
             index, geometry::SurfaceHit{.polygon = i, .triangle = k, .boundary = false}));
         casts_.push_back(p.casts_shadows ? 1 : 0);
       }
     }
-    visible_ = triangle_scene(device_, vertices, all);
+    // The filter acts on occlusion rays only: where every model casts, the
+    // primary rays' scene carries it unused.
+    const RTCFilterFunctionN filter = tinted ? tint_filter : nullptr;
+    const bool split = casting.size() != all.size();
+    visible_ = triangle_scene(device_, vertices, all, split ? nullptr : filter);
     throw_if_failed(device_, error_, "building the scene's BVH");
-    if (casting.size() != all.size()) {
-      casters_ = triangle_scene(device_, vertices, casting);
+    if (split) {
+      casters_ = triangle_scene(device_, vertices, casting, filter);
       throw_if_failed(device_, error_, "building the shadow casters' BVH");
     }
     if (!all.empty()) {

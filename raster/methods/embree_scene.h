@@ -21,8 +21,10 @@ namespace umbra::raster {
 class EmbreeScene {
  public:
   /// Builds both BVHs with up to `threads` threads (0: all). Throws
-  /// std::runtime_error with Embree's message if Embree fails.
-  EmbreeScene(const geometry::SceneIndex& index, unsigned threads);
+  /// std::runtime_error with Embree's message if Embree fails. With
+  /// `tinted`, the casters carry the occlusion filter of coloured shadows
+  /// (ray_transmittance.h), and every occlusion call must pass a TintContext.
+  EmbreeScene(const geometry::SceneIndex& index, unsigned threads, bool tinted = false);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -36,6 +38,8 @@ class EmbreeScene {
   const SurfaceEntry& entry(unsigned prim) const { return entries_[prim]; }
   /// Whether that primitive's model casts shadows.
   bool casts(unsigned prim) const { return casts_[prim] != 0; }
+  /// Per casters() primitive: its polygon in the SceneIndex.
+  const std::vector<std::uint32_t>& caster_polygons() const { return caster_polygon_; }
   /// Length of the diagonal of the float triangles' bounding box (0 when
   /// the scene has no triangle): the unit of RayOptions::epsilon.
   double diagonal() const { return diagonal_; }
@@ -49,6 +53,7 @@ class EmbreeScene {
   RTCScene casters_ = nullptr;  ///< null when every model casts
   std::vector<SurfaceEntry> entries_;
   std::vector<unsigned char> casts_;
+  std::vector<std::uint32_t> caster_polygon_;
   double diagonal_ = 0;
 };
 

@@ -17,7 +17,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
   const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
   Frame frame(camera.width, camera.height, lights, options.threads);
-  frame.soft = soft_lights(scene);
+  describe_lights(scene, frame);
   const auto start = std::chrono::steady_clock::now();
   util::Progress progress(options.progress);
   progress.phase("exact", static_cast<std::uint64_t>(rows.size()));
@@ -38,8 +38,7 @@ Frame render_exact(const geometry::SceneIndex& index, const RenderOptions& optio
           decide_area_light(index, ray, *hit, l, l, geometry::FractionPrecision::exact, sample);
           continue;
         }
-        sample.classes[l] = geometry::classify_sample(index, ray, *hit, l).cls;
-        sample.counts[l] = sample.classes[l] == geometry::ShadowClass::shadowed ? 1 : 0;
+        decide_by_oracle(index, ray, *hit, l, l, frame.tinted, sample);
       }
       store_sample(scene, ray, sample, pixel, frame);
     }

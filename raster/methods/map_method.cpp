@@ -138,7 +138,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   std::vector<std::atomic<std::uint32_t>> needed(lights);
   std::atomic<std::uint64_t> fallbacks{0};
   Frame frame(camera.width, camera.height, lights, options.threads);
-  frame.soft = soft_lights(scene);
+  describe_lights(scene, frame);
   // Per area light, once: where its depth views look from (the centroid
   // shading uses) and PCSS's light size.
   std::vector<Vec3> centre(lights);

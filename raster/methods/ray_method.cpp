@@ -16,6 +16,7 @@
 #include <raster/light_windows.h>
 #include <raster/methods/area_light_samples.h>
 #include <raster/methods/embree_scene.h>
+#include <raster/methods/ray_transmittance.h>
 #include <raster/methods/render_methods.h>
 #include <raster/pixel_sample.h>
 #include <util/parallel_for.h>
@@ -102,7 +103,6 @@ Reach shadow_ray(const FloatLight& light, const glm::vec3& h, const glm::vec3& n
   // its own samples when the light is on its far side. A model that casts
   // no shadows does not, and its own triangle is not in casters().
   const float nl = glm::dot(ng, dir), ne = glm::dot(ng, to_eye);
-  if (casts && ((nl < 0 && ne > 0) || (nl > 0 && ne < 0))) return Reach::attached;
   ray.org_x = h.x;
   ray.org_y = h.y;
   ray.org_z = h.z;
@@ -115,6 +115,9 @@ Reach shadow_ray(const FloatLight& light, const glm::vec3& h, const glm::vec3& n
   ray.mask = ~0u;
   ray.id = 0;
   ray.flags = 0;
+  // The ray is filled in either case: light through a tinted hit surface
+  // is traced on (ray_transmittance.h).
+  if (casts && ((nl < 0 && ne > 0) || (nl > 0 && ne < 0))) return Reach::attached;
   return Reach::trace;
 }
 
@@ -205,7 +208,10 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
 
   progress.phase("bvh", 1);
   auto start = util::Clock::now();
-  const EmbreeScene rt(index, options.threads);
+  const bool tinted = geometry::has_transmittance(scene);
+  const EmbreeScene rt(index, options.threads, tinted);
+  const std::vector<std::uint8_t> tinted_polygon =
+      tinted ? tinted_polygons(index) : std::vector<std::uint8_t>{};
   stats.seconds_bvh = util::seconds_since(start);
 
   // As in the other methods, "decide" includes allocating the frame.
@@ -217,7 +223,7 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
                                    ? light_windows(camera, scene.lights)
                                    : LightWindows::whole(camera.width, camera.height, lights);
   Frame frame(camera.width, camera.height, windows, options.threads);
-  frame.soft = soft_lights(scene);
+  describe_lights(scene, frame);
   const std::vector<FloatLight> float_light = float_lights(scene);
   const std::vector<std::optional<AreaSurface>> area = area_surfaces(scene);
   const auto area_samples = static_cast<std::uint64_t>(options.ray.area_samples);
@@ -250,6 +256,9 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
     // An area light's visible fraction is decided at once, pixel by pixel.
     std::vector<ShadowClass> classes(here.size(), ShadowClass::lit);
     std::vector<float> visibility(here.size(), 1.0f);
+    // A tinted scene: each occlusion ray's tinted polygons, and τ per light.
+    std::vector<TintedHits> tint_hits;
+    std::vector<geometry::Rgb> tau(tinted ? here.size() : 0, geometry::Rgb{0, 0, 0});
     std::vector<RTCRay> area_rays;
     std::vector<double> area_weights;
     std::uint64_t area_rays_traced = 0;
@@ -280,26 +289,47 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
           case Reach::out_of_range:
             classes[k] = ShadowClass::out_of_range;
             break;
-          case Reach::attached:
+          case Reach::attached: {
             classes[k] = ShadowClass::shadowed;
+            // Light through the hit surface itself when it is tinted: its
+            // T first, then whatever else the ray passes.
+            const std::uint32_t own = rt.entry(p.hit.primID).hit.polygon;
+            if (!tinted || !tinted_polygon[own] || !(ray.tfar > ray.tnear)) break;
+            ray.id = static_cast<unsigned>(occlusion.size());
+            occlusion.push_back(ray);
+            slot.push_back(k);
+            tint_hits.emplace_back();
+            tint_hits.back().add(own);
             break;
+          }
           case Reach::trace:
             // A point light nearer than twice the offset: nothing fits between.
             if (ray.tfar > ray.tnear) {
+              ray.id = static_cast<unsigned>(occlusion.size());
               occlusion.push_back(ray);
               slot.push_back(k);
+              if (tinted) tint_hits.emplace_back();
             }
             break;
         }
       }
     }
-    RTCIntersectContext incoherent;
-    rtcInitIntersectContext(&incoherent);
+    TintContext context{};
+    rtcInitIntersectContext(&context.embree);
+    context.polygon_of = rt.caster_polygons().data();
+    context.tinted = tinted_polygon.data();
+    context.hits = tint_hits.data();
     if (!occlusion.empty())
-      rtcOccluded1M(rt.casters(), &incoherent, occlusion.data(),
+      rtcOccluded1M(rt.casters(), &context.embree, occlusion.data(),
                     static_cast<unsigned>(occlusion.size()), sizeof(RTCRay));
-    for (std::size_t k = 0; k < occlusion.size(); ++k)
-      if (occlusion[k].tfar == -kInfinity) classes[slot[k]] = ShadowClass::shadowed;
+    for (std::size_t k = 0; k < occlusion.size(); ++k) {
+      if (occlusion[k].tfar == -kInfinity) {
+        classes[slot[k]] = ShadowClass::shadowed;  // τ stays 0
+      } else if (tinted && tint_hits[k].count > 0) {
+        classes[slot[k]] = ShadowClass::shadowed;
+        tau[slot[k]] = tau_of(index, tint_hits[k]);
+      }
+    }
     shadow_rays += occlusion.size() + area_rays_traced;
 
     PixelSample sample;
@@ -324,6 +354,9 @@ Frame render_ray(const geometry::SceneIndex& index, const RenderOptions& options
       sample.visibility.assign(visibility.begin() + static_cast<std::ptrdiff_t>(first[i]),
                                visibility.begin() + static_cast<std::ptrdiff_t>(first[i + 1]));
       sample.counts.resize(sample.classes.size());
+      if (tinted)
+        sample.tau.assign(tau.begin() + static_cast<std::ptrdiff_t>(first[i]),
+                          tau.begin() + static_cast<std::ptrdiff_t>(first[i + 1]));
       // An area light's count is 0: no depth count decides it.
       for (std::size_t k = 0; k < sample.classes.size(); ++k)
         sample.counts[k] =

@@ -5,11 +5,13 @@
 #include <geometry/exact/constructions.h>
 #include <geometry/exact/predicates.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/transmittance.h>
 #include <geometry/volumes/builder.h>
 #include <geometry/volumes/crossings.h>
 #include <geometry/volumes/eye_start.h>
 #include <raster/light_windows.h>
 #include <raster/methods/render_methods.h>
+#include <raster/methods/tint_channels.h>
 #include <raster/pixel_sample.h>
 #include <raster/scanline/scanline.h>
 #include <raster/scanline/surface_table.h>
@@ -34,9 +36,10 @@ namespace {
 /// edge-on they would be drawn as nothing and flag their whole bounding
 /// box, and where they hold the eye, every pixel.
 /// A light whose window is empty (its reach off the image) counts nowhere:
-/// its polygons are left out.
+/// its polygons are left out. Each counts in its channel (tint_channels.h).
 void append_shadow_polygons(const geometry::ShadowVolumes& volumes, const geometry::EyeStart& eye,
-                            const LightWindows& windows, std::vector<RasterPolygon>& polygons) {
+                            const LightWindows& windows, const TintChannels& channels,
+                            std::vector<RasterPolygon>& polygons) {
   std::vector<std::uint8_t> through_eye(volumes.polygons.size(), 0);
   for (const auto& planes : eye.planes)
     for (const geometry::EyePlaneSide& side : planes) through_eye[side.polygon] = 1;
@@ -48,7 +51,7 @@ void append_shadow_polygons(const geometry::ShadowVolumes& volumes, const geomet
     raster.vertices = s.vertices;
     raster.kind = RasterPolygon::Kind::shadow;
     raster.id = k;
-    raster.light = s.light;
+    raster.light = channels.of(s);
     raster.nb_c = s.nb_c;
     raster.group = s.group;
     polygons.push_back(std::move(raster));
@@ -62,7 +65,7 @@ void append_shadow_polygons(const geometry::ShadowVolumes& volumes, const geomet
 /// orientation(u, v, L, ·) < 0, on which the side runs counter-clockwise.
 std::vector<EyePlane> eye_planes(const geometry::Scene& scene,
                                  const geometry::ShadowVolumes& volumes,
-                                 const geometry::EyeStart& eye) {
+                                 const geometry::EyeStart& eye, const TintChannels& channels) {
   std::vector<EyePlane> out;
   for (std::uint32_t l = 0; l < eye.planes.size(); ++l)
     for (const geometry::EyePlaneSide& side : eye.planes[l]) {
@@ -75,7 +78,7 @@ std::vector<EyePlane> eye_planes(const geometry::Scene& scene,
                                    ? geometry::exact_normal(u, v, light.position)
                                    : -geometry::exact_cross(u, v, light.direction);
       EyePlane plane;
-      plane.light = l;
+      plane.light = channels.of(sp);
       plane.normal = n;
       if (side.holds_eye) {
         if (side.eye_side == geometry::Sign::positive) plane.normal = -n;
@@ -145,12 +148,20 @@ Frame render_volume(const geometry::SceneIndex& index,
   const LightWindows windows = options.light_windows
                                    ? light_windows(camera, scene.lights)
                                    : LightWindows::whole(camera.width, camera.height, lights);
-  append_shadow_polygons(volumes, eye, windows, table.polygons);
-  const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye);
+  // Coloured shadows: the tinted models' counts apart (tint_channels.h).
+  // Without them one channel a light, and the same work as ever.
+  const TintChannels channels = options.shadows && geometry::has_transmittance(scene)
+                                    ? TintChannels(scene, volumes, eye)
+                                    : TintChannels(lights, eye);
+  stats.tint_channels = channels.size() - lights;
+  const std::optional<LightWindows> channel_windows =
+      channels.any_tinted() ? std::optional(channels.windows(windows)) : std::nullopt;
+  append_shadow_polygons(volumes, eye, windows, channels, table.polygons);
+  const std::vector<EyePlane> planes = eye_planes(scene, volumes, eye, channels);
   progress.phase("scanline", static_cast<std::uint64_t>(rows.size()));
-  const ScanlineResult scan =
-      scanline_render(camera, table.polygons, lights, options.threads, eye.in_shadow, &progress,
-                      true, planes, rows, &windows);
+  const ScanlineResult scan = scanline_render(
+      camera, table.polygons, channels.size(), options.threads, eye.in_shadow, &progress, true,
+      planes, rows, channel_windows ? &*channel_windows : &windows);
   stats.seconds_raster = util::seconds_since(start);
   stats.surface_polygons = table.entries.size();
   stats.spans = scan.spans;
@@ -160,7 +171,7 @@ Frame render_volume(const geometry::SceneIndex& index,
   start = util::Clock::now();
   const geometry::VolumeCrossings crossings(scene, volumes);
   Frame frame(camera.width, camera.height, windows, options.threads);
-  frame.soft = soft_lights(scene);
+  describe_lights(scene, frame);
   std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
   // Light l's count at a visible point, decided exactly on the ideal
   // volumes; where even that meets a degenerate configuration (the eye
@@ -173,13 +184,41 @@ Frame render_volume(const geometry::SceneIndex& index,
     const std::optional<int> count = !options.shadows    ? std::optional<int>(0)
                                      : eye.degenerate[l] ? std::nullopt
                                                          : crossings.count(ray, tri, l, eye);
-    if (count) {
+    if (frame.tinted) sample.tau[k] = {0, 0, 0};
+    if (count && !(frame.tinted && !channels.tinted_of(l).empty())) {
       sample.counts[k] = *count;
       sample.classes[k] = class_of_count(*count, pixel, l);
     } else {
-      sample.classes[k] = geometry::classify_sample(index, ray, hit, l).cls;
-      sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
+      // The oracle; with tinted volumes for this light it also gives τ
+      // (the exact count says how many polygons shadow, not whose).
+      decide_by_oracle(index, ray, hit, k, l, frame.tinted, sample);
+      if (count) sample.counts[k] = *count;
     }
+  };
+  // Light l's counts at pixel (i, j) from the scanline, each channel's
+  // eye count added: the opaque channel's is `opaque` (read by the caller
+  // where it knows the place); its class, and in a tinted frame τ.
+  const auto decide_from_counts = [&](int opaque, int i, int j, std::size_t pixel, std::size_t k,
+                                      std::uint32_t l, PixelSample& sample) {
+    int total = opaque;
+    const std::vector<std::uint32_t>& tinted = channels.tinted_of(l);
+    if (!tinted.empty()) {
+      class_of_count(opaque, pixel, l);  // throws on a broken volume
+      thread_local std::vector<geometry::ModelCount> counts;
+      counts.clear();
+      for (const std::uint32_t c : tinted) {
+        const int n = channels.eye_count(c) + scan.count_at(c, i, j);
+        class_of_count(n, pixel, l);  // throws on a broken volume
+        total += n;
+        if (n > 0) counts.push_back({channels.model(c), n});
+      }
+      sample.tau[k] =
+          opaque > 0 ? geometry::Rgb{0, 0, 0} : geometry::transmittance_product(scene, counts);
+    } else if (frame.tinted) {
+      sample.tau[k] = {0, 0, 0};  // only opaque volumes for this light
+    }
+    sample.counts[k] = total;
+    sample.classes[k] = class_of_count(total, pixel, l);
   };
   progress.phase("shading", static_cast<std::uint64_t>(rows.size()));
   for_each_row(rows, options.threads, [&](int j) {
@@ -198,6 +237,7 @@ Frame render_volume(const geometry::SceneIndex& index,
       sample.classes.resize(here.size());
       sample.counts.resize(here.size());
       sample.visibility.resize(here.size());
+      sample.tau.resize(here.size());
       for (const std::uint32_t l : here) row_slot.push_back(windows.inside(l, 0, j));
     } else {
       sweep.emplace(windows, j);
@@ -211,6 +251,7 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.classes.resize(here.size());
         sample.counts.resize(here.size());
         sample.visibility.resize(here.size());
+        sample.tau.resize(here.size());
       }
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       const std::uint8_t doubt = scan.uncertain[pixel];
@@ -237,8 +278,7 @@ Frame render_volume(const geometry::SceneIndex& index,
           if (eye.degenerate[l]) {
             // No count at the eye for this light: the oracle decides its
             // samples, the scanline's answer stands for every other light.
-            sample.classes[k] = geometry::classify_sample(index, ray, entry.hit, l).cls;
-            sample.counts[k] = sample.classes[k] == ShadowClass::shadowed ? 1 : 0;
+            decide_by_oracle(index, ray, entry.hit, k, l, frame.tinted, sample);
             continue;
           }
           if (spheres.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
@@ -249,17 +289,19 @@ Frame render_volume(const geometry::SceneIndex& index,
             sample.counts[k] = 0;
             continue;
           }
-          if ((doubt & kLightsUncertain) && (scan.light_mask[pixel] & light_bit(l))) {
+          if ((doubt & kLightsUncertain) && (scan.light_mask[pixel] & channels.bits(l))) {
             // A shadow polygon of this light was too close to call: its
             // count again, exactly, at the visible point that stands.
             ++row_recounts;
             decide_exactly(ray, entry.hit, tri, pixel, k, l, sample);
             continue;
           }
-          sample.counts[k] =
-              eye.count[l] + (whole ? scan.count[row_slot[k] + static_cast<std::size_t>(i)]
-                                    : scan.count_at(l, i, j));
-          sample.classes[k] = class_of_count(sample.counts[k], pixel, l);
+          // The opaque channel is light l's, at the same place as in the
+          // frame's windows (tint_channels.h).
+          decide_from_counts(
+              channels.eye_count(l) + (whole ? scan.count[row_slot[k] + static_cast<std::size_t>(i)]
+                                             : scan.count_at(l, i, j)),
+              i, j, pixel, k, l, sample);
         }
         store_sample(scene, ray, sample, pixel, frame);
         continue;
