@@ -141,6 +141,26 @@ TEST(MapVariants, IdBufferHasNoAcneWhereAZeroBiasDepthMapHasMuch) {
   EXPECT_LT(report.lights[0].false_shadowed, 30u);
 }
 
+TEST(MapVariants, IdBufferShadowsAReceiverThatCastsNothingByDepthAlone) {
+  // The floor casts no shadow, so its ID is in no texel: the box's depth
+  // alone shadows it, still without bias, and nothing else does.
+  geometry::Scene scene = floor_and_box(point_light({2.5, 5, 1.5}));
+  scene.models[0].casts_shadows = false;
+  const Frame exact = render(scene, {.method = Method::exact, .threads = 2});
+  const Frame ids = render(scene, map_options(kObjectIds));
+  const ValidationReport report = score(scene, ids);
+  int shadowed = 0;
+  for (int j = 0; j < ids.height; ++j)
+    for (int i = 0; i < ids.width; ++i) {
+      const std::size_t pixel = ids.pixel(i, j);
+      shadowed += exact.shadow(0, pixel) == kShadowShadowed;
+      if (report.mask[pixel] == 2) {
+        EXPECT_TRUE(near_shadow_boundary(exact, i, j, 2, 0)) << i << "," << j;
+      }
+    }
+  EXPECT_GT(shadowed, 200);
+}
+
 /// A glossy floor whose highlight (the light's mirror image seen from the
 /// eye, at z = 20/7) lies in the shadow of a box floating above it.
 geometry::Scene highlight_in_shadow() {
