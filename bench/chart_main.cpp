@@ -7,6 +7,7 @@
 #include <fuzz/scene_export.h>
 #include <geometry/io/scene_json.h>
 #include <raster/image_io.h>
+#include <raster/methods/map_variants.h>
 #include <util/atomic_files.h>
 
 #include "bench_scene.h"
@@ -100,7 +101,7 @@ std::string csv_row(const std::string& kind, const std::string& name, const std:
       row.scored() ? 100.0 * static_cast<double>(row.errors()) / row.scored() : 0.0;
   return fmt::format(
       "{},{},\"{}\",{},{},{},{},{},\"{}\",{},{},{},{},{},{},{},{},{:.6f},{},{},{},{},{},{},{},{},"
-      "{},{},{},{}\n",
+      "{},{},{},{},{}\n",
       kind, name, parameter, value, scene.lights.size(), scene.camera.width, scene.camera.height,
       row.setting.method, row.setting.curve, map ? std::to_string(o.map.resolution) : "",
       map ? fmt::format("{}", o.map.constant_bias) : "",
@@ -111,14 +112,15 @@ std::string csv_row(const std::string& kind, const std::string& name, const std:
       row.is_scored ? fmt::format("{:.6f}", percent) : "", row.is_scored ? "1" : "0",
       ray ? std::to_string(o.ray.area_samples) : "",
       row.soft_scored ? fmt::format("{:.6g}", row.soft_error_sum / row.soft_scored) : "",
-      row.soft_scored ? fmt::format("{:.6g}", row.soft_max_error) : "");
+      row.soft_scored ? fmt::format("{:.6g}", row.soft_max_error) : "",
+      map ? raster::map_variant_name(o.map) : "");
 }
 
 constexpr const char* kHeader =
     "kind,name,parameter,value,lights,width,height,method,curve,map_resolution,"
     "map_constant_bias,map_slope_bias,map_lookup,map_pcf,ray_epsilon,runs,seconds,median_s,"
     "compared,boundary,scored,false_lit,false_shadowed,wrong_range,errors,error_percent,scored_"
-    "flag,ray_area_samples,soft_mean_error,soft_max_error\n";
+    "flag,ray_area_samples,soft_mean_error,soft_max_error,map_variant\n";
 
 void report(const std::string& name, const std::string& value, const Row& row) {
   std::fprintf(stderr, "  %-28s %-8s %-40s %9.1f ms  %6llu errors of %llu\n", name.c_str(),

@@ -1,6 +1,7 @@
 #include "chart_run.h"
 
 #include <raster/image_io.h>
+#include <raster/methods/map_variants.h>
 
 #include <fmt/format.h>
 
@@ -13,10 +14,14 @@ namespace umbra::bench {
 namespace {
 
 Setting map_setting(const std::string& curve, int resolution, double bias_factor,
-                    raster::MapLookup lookup, int pcf) {
+                    raster::MapLookup lookup, int pcf,
+                    raster::MapVariant variant = raster::MapVariant::depth,
+                    raster::IdGranularity ids = raster::IdGranularity::object) {
   Setting s{"map", curve, {}};
   s.options.method = raster::Method::map;
   raster::ShadowMapOptions& m = s.options.map;
+  m.variant = variant;
+  m.id_granularity = ids;
   m.resolution = resolution;
   m.constant_bias *= bias_factor;
   m.slope_bias *= bias_factor;
@@ -48,7 +53,9 @@ Setting plain_setting() {
 }  // namespace
 
 std::vector<Setting> chart_settings(bool quick, int max_map_resolution, bool area) {
+  using raster::IdGranularity;
   using raster::MapLookup;
+  using raster::MapVariant;
   std::vector<Setting> out = {plain_setting(), volume_setting()};
   if (area) {
     for (const int n : quick ? std::vector<int>{16} : std::vector<int>{16, 64, 256, 1024}) {
@@ -70,26 +77,48 @@ std::vector<Setting> chart_settings(bool quick, int max_map_resolution, bool are
     double bias;
     MapLookup lookup;
     int pcf;
+    MapVariant variant = MapVariant::depth;
+    IdGranularity ids = IdGranularity::object;
   };
+  // The source papers' variants (issue 22): Williams' post-process and
+  // Ikedo's ID buffer, an ID per object (his) and per polygon.
+  const Curve post{"map post-process (Williams)", 1, MapLookup::nearest, 1,
+                   MapVariant::post_process};
+  const Curve object_ids{"map ID buffer per object (Ikedo)", 1, MapLookup::nearest, 1,
+                         MapVariant::polygon_id};
+  const Curve polygon_ids{"map ID buffer per polygon", 1,
+                          MapLookup::nearest,          1,
+                          MapVariant::polygon_id,      IdGranularity::polygon};
   const std::vector<Curve> curves =
-      quick ? std::vector<Curve>{{"map nearest, default bias", 1, MapLookup::nearest, 1}}
+      quick ? std::vector<Curve>{{"map nearest, default bias", 1, MapLookup::nearest, 1},
+                                 post,
+                                 object_ids}
             : std::vector<Curve>{{"map nearest, no bias", 0, MapLookup::nearest, 1},
                                  {"map nearest, default bias", 1, MapLookup::nearest, 1},
                                  {"map nearest, 4x bias", 4, MapLookup::nearest, 1},
                                  {"map bilinear, default bias", 1, MapLookup::bilinear, 1},
-                                 {"map PCF 3x3, default bias", 1, MapLookup::nearest, 3}};
+                                 {"map PCF 3x3, default bias", 1, MapLookup::nearest, 3},
+                                 post,
+                                 object_ids,
+                                 polygon_ids};
   for (const Curve& c : curves)
     for (const int r : resolutions)
-      if (r <= max_map_resolution) out.push_back(map_setting(c.name, r, c.bias, c.lookup, c.pcf));
+      if (r <= max_map_resolution)
+        out.push_back(map_setting(c.name, r, c.bias, c.lookup, c.pcf, c.variant, c.ids));
   return out;
 }
 
 std::vector<Setting> sweep_settings() {
   const int map_default = raster::ShadowMapOptions{}.resolution;
-  return {volume_setting(), ray_setting("ray", 1),
+  return {volume_setting(),
+          ray_setting("ray", 1),
           map_setting("map 512", 512, 1, raster::MapLookup::nearest, 1),
           map_setting("map " + std::to_string(map_default) + " (default)", map_default, 1,
-                      raster::MapLookup::nearest, 1)};
+                      raster::MapLookup::nearest, 1),
+          map_setting("map " + std::to_string(map_default) + " post-process", map_default, 1,
+                      raster::MapLookup::nearest, 1, raster::MapVariant::post_process),
+          map_setting("map " + std::to_string(map_default) + " ID per object", map_default, 1,
+                      raster::MapLookup::nearest, 1, raster::MapVariant::polygon_id)};
 }
 
 Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
@@ -131,10 +160,16 @@ Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
 
 std::string setting_label(const Setting& setting) {
   const raster::RenderOptions& o = setting.options;
-  if (setting.method == "map")
-    return fmt::format("map-{}-{}-b{:g}-s{:g}-pcf{}", o.map.resolution,
+  if (setting.method == "map") {
+    // The depth variant's labels as before the variants (docs' pictures
+    // name them); the others say which they are.
+    const std::string variant = o.map.variant == raster::MapVariant::depth
+                                    ? ""
+                                    : std::string("-") + raster::map_variant_name(o.map);
+    return fmt::format("map-{}-{}-b{:g}-s{:g}-pcf{}{}", o.map.resolution,
                        o.map.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest",
-                       o.map.constant_bias, o.map.slope_bias, o.map.pcf);
+                       o.map.constant_bias, o.map.slope_bias, o.map.pcf, variant);
+  }
   if (setting.method == "ray")
     return fmt::format("ray-eps{:g}-n{}", o.ray.epsilon, o.ray.area_samples);
   return setting.method;

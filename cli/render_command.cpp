@@ -8,6 +8,7 @@
 #include <cli/stats_json.h>
 #include <raster/image_io.h>
 #include <raster/memory_estimate.h>
+#include <raster/methods/map_variants.h>
 #include <raster/render.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
@@ -41,9 +42,14 @@ raster::Method parse_method(const std::string& name) {
 /// something to ignore silently.
 void check_method_options(const RenderArgs& args) {
   const bool map_given = args.map_resolution || args.map_bias || args.map_slope_bias ||
-                         args.map_lookup || args.map_dither || args.map_pcf;
+                         args.map_lookup || args.map_dither || args.map_pcf || args.map_variant;
   if (map_given && args.method != "map")
     throw util::InputError("--map-*", "applies to --method map only");
+  // Ikedo's buffer compares IDs, and depths only without bias: a bias given
+  // with it would be silently ignored.
+  if (args.map_variant && args.map_variant->starts_with("id") &&
+      (args.map_bias || args.map_slope_bias))
+    throw util::InputError("--map-bias", "does not apply to --map-variant id (no depth bias)");
   if (args.ray_epsilon && args.method != "ray")
     throw util::InputError("--ray-epsilon", "applies to --method ray only");
   if (args.area_samples && args.method != "ray")
@@ -68,7 +74,8 @@ std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
                   args.map_lookup.value_or(""), args.map_dither, args.map_pcf.value_or(-1),
                   args.ray_epsilon.value_or(-1),
                   args.exposure != 0 ? fmt::format(" exposure={}", args.exposure) : "",
-                  args.area_samples ? fmt::format(" area_samples={}", *args.area_samples) : ""));
+                  args.area_samples ? fmt::format(" area_samples={}", *args.area_samples) : "",
+                  args.map_variant ? fmt::format(" map_variant={}", *args.map_variant) : ""));
   return fmt::format("{:016x}", hash);
 }
 
@@ -113,6 +120,13 @@ raster::ShadowMapOptions map_options(const RenderArgs& args) {
         *args.map_lookup == "bilinear" ? raster::MapLookup::bilinear : raster::MapLookup::nearest;
   map.dither = args.map_dither;
   if (args.map_pcf) map.pcf = *args.map_pcf;
+  if (args.map_variant) {
+    const std::string& v = *args.map_variant;
+    map.variant = v == "post"           ? raster::MapVariant::post_process
+                  : v.starts_with("id") ? raster::MapVariant::polygon_id
+                                        : raster::MapVariant::depth;
+    if (v == "id-polygon") map.id_granularity = raster::IdGranularity::polygon;
+  }
   return map;
 }
 
@@ -166,6 +180,13 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->check(CLI::IsMember({1, 3, 5}))
       ->default_str(std::to_string(kMapDefaults.pcf))
       ->type_name("K");
+  cmd->add_option("--map-variant", args.map_variant,
+                  "depth (Williams), post (Williams' post-process: shadows darken the shaded "
+                  "image), id (Ikedo's ID buffer, an ID per object) or id-polygon (an ID per "
+                  "polygon) (map only; docs/shadow-maps.md)")
+      ->transform(CLI::IsMember({"depth", "post", "id", "id-polygon"}, CLI::ignore_case))
+      ->default_str("depth")
+      ->type_name("VARIANT");
   cmd->add_option("--ray-epsilon", args.ray_epsilon,
                   "Shadow-ray start offset as a fraction of the scene's bounding-box diagonal "
                   "(ray only)")
@@ -251,6 +272,9 @@ int run_render(const RenderArgs& args) {
   options.spp = args.spp;
   options.exposure = args.exposure;
   options.map = map_options(args);
+  if (options.method == raster::Method::map)
+    if (const auto why = raster::map_variant_refusal(options.map, scene))
+      throw util::InputError("--map-variant", *why);
   if (args.ray_epsilon) options.ray.epsilon = *args.ray_epsilon;
   if (args.area_samples) options.ray.area_samples = *args.area_samples;
   if (tile) {

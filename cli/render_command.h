@@ -29,6 +29,7 @@ struct RenderArgs {
   std::optional<std::string> map_lookup;  ///< "nearest" or "bilinear"
   bool map_dither = false;
   std::optional<int> map_pcf;
+  std::optional<std::string> map_variant;  ///< "depth", "post", "id" or "id-polygon"
   // --method ray (raster::RayOptions)
   std::optional<double> ray_epsilon;
   std::optional<int> area_samples;  ///< sample points per area light and visible sample

@@ -1,5 +1,6 @@
 #include <cli/output_files.h>
 #include <cli/stats_json.h>
+#include <raster/methods/map_variants.h>
 #include <util/cpu_budget.h>
 
 #include <cstdio>
@@ -61,6 +62,7 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
         {"lookup", m.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest"},
         {"dither", m.dither},
         {"pcf", m.pcf},
+        {"variant", raster::map_variant_name(m)},
     };
   }
   return j;

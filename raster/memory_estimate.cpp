@@ -120,13 +120,15 @@ u64 estimate_render_bytes(const geometry::Scene& scene, const RenderOptions& opt
   if (options.method == Method::map) {
     // Every view a light may need (six cube faces of a point light or of
     // an area light's centroid, one view of a directional light), float
-    // texels with their margins (PCSS's wider for an area light).
+    // texels with their margins (PCSS's wider for an area light), and
+    // Ikedo's IDs beside them (4 bytes more a texel).
+    const u64 texel_bytes = options.map.variant == MapVariant::polygon_id ? 8 : 4;
     for (const geometry::Light& light : scene.lights) {
       const bool area = light.type == geometry::LightType::area;
       const u64 side =
           static_cast<u64>(options.map.resolution) + (area ? 2 * (kPcssMaxRadius + 2) : 8);
       const u64 views = light.type == geometry::LightType::directional ? 1 : 6;
-      bytes = add(bytes, mul(views * 4, side * side));
+      bytes = add(bytes, mul(views * texel_bytes, side * side));
     }
   }
   return bytes;

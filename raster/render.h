@@ -17,6 +17,23 @@ enum class Method { volume, map, ray, exact };
 /// How a shadow map is read at a sample (Williams).
 enum class MapLookup { nearest, bilinear };
 
+/// Which of the source papers' shadow-map algorithms runs
+/// (docs/shadow-maps.md, "Variants"):
+///   depth: Williams' "correct" form, each visible point compared with the
+///     stored depth plus the bias, shaded after the decision;
+///   post_process: Williams' modified form, the image shaded as if every
+///     light reached every point, then each pixel's point rebuilt from the
+///     image's float depth buffer, looked up, and a shadowed pixel darkened
+///     (its highlight scaled with it, not removed: his remark);
+///   polygon_id: Ikedo's ID buffer, the map holding the ID (and depth) of
+///     the nearest surface; lit where the ID at the lookup is the sample's
+///     own, else by the depth with no bias.
+enum class MapVariant { depth, post_process, polygon_id };
+
+/// What one ID of Ikedo's buffer names: a model ("a code uniquely
+/// identifying every object", the paper's choice) or a single polygon.
+enum class IdGranularity { object, polygon };
+
 /// Williams' shadow maps (Method::map): one depth view per direction a light
 /// must shadow (six 90° cube faces for a point light, one orthographic view
 /// for a directional light), built only where some visible sample reads it.
@@ -34,6 +51,8 @@ struct ShadowMapOptions {
   /// Percentage-closer filter width in texels: 1 (off), 3 or 5. shadow.<i>
   /// is shadowed when less than half the filter sees the light.
   int pcf = 1;
+  MapVariant variant = MapVariant::depth;
+  IdGranularity id_granularity = IdGranularity::object;  ///< polygon_id only
 };
 
 /// The most sample points RayOptions::area_samples may ask for (2^20).

@@ -71,7 +71,10 @@ def scene_chart(name, rows, out):
         # The volume's certified V errs by the float AOV's rounding (~1e-11
         # on average): drawn at 1e-12 and above.
         ys = [max(p["soft_mean"] or 0, 1e-12) if soft else p["pct"] for p in pts]
-        ax.plot(xs, ys, label=curve, linewidth=1.2, **STYLE[method])
+        style = dict(STYLE[method])
+        if method == "map" and pts[0].get("map_variant") not in (None, "", "depth"):
+            style["linestyle"] = "--"  # the source papers' variants (issue 22)
+        ax.plot(xs, ys, label=curve, linewidth=1.2, **style)
         if soft and method in ("ray", "map"):
             for p, y in zip(pts, ys):
                 label = p["ray_area_samples"] if method == "ray" else p["map_resolution"]
@@ -126,6 +129,31 @@ def sweep_chart(name, rows, out):
     plt.close(fig)
 
 
+VARIANTS = (("depth", "nearest, default bias"), ("post", "post-process"),
+            ("id", "ID buffer per object"), ("id-polygon", "ID buffer per polygon"))
+
+
+def variant_table(scenes):
+    """The source papers' map variants side by side (issue 22): errors as
+    false-lit / false-shadowed at the largest resolution each scene ran."""
+    lines = ["", "## Shadow-map variants: errors (false-lit / false-shadowed)", "",
+             "| scene | resolution | " + " | ".join(n for _, n in VARIANTS) + " |",
+             "| --- | --- |" + " --- |" * len(VARIANTS)]
+    for name, rows in scenes.items():
+        maps = [r for r in rows if r["method"] == "map" and r.get("map_variant")]
+        if not any(r["map_variant"] != "depth" for r in maps):
+            continue
+        res = max(int(r["map_resolution"]) for r in maps)
+        cells = [name, str(res)]
+        for variant, curve in VARIANTS:
+            hit = [r for r in maps if r["map_variant"] == variant and
+                   int(r["map_resolution"]) == res and curve in r["curve"]]
+            cells.append(f"{hit[0]['false_lit']} / {hit[0]['false_shadowed']} "
+                         f"({hit[0]['median_ms']:.1f} ms)" if hit else "–")
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
 def summary(scenes, sweeps, out):
     lines = ["# Speed against accuracy: headline numbers", "",
              "| scene | volume ms (errors) | ray ms (errors) | volume / ray time | "
@@ -153,6 +181,7 @@ def summary(scenes, sweeps, out):
             cells.append("–")
         cells.append(f"{plain['median_ms']:.1f}" if plain else "–")
         lines.append("| " + " | ".join(cells) + " |")
+    lines += variant_table(scenes)
     lines += ["", "## Sweeps: errors (false-lit / false-shadowed) per point", ""]
     for name, rows in sweeps.items():
         curves = OrderedDict()

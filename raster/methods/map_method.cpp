@@ -8,8 +8,13 @@
 //      away from the light, exact) and, for the rest, which view it reads;
 //   2. depth views: only those some sample reads (shadow_map.h);
 //   3. decide pass: each remaining (sample, light) looked up (shadow_lookup.h).
+// The variants (map_variants.h) change what is looked up and how: Williams'
+// post-process looks up the point rebuilt from the image's float depth and
+// darkens the pixel after shading; Ikedo's ID buffer stores and compares
+// surface IDs.
 #include <geometry/box.h>
 #include <geometry/exact/predicates.h>
+#include <raster/methods/map_variants.h>
 #include <raster/methods/render_methods.h>
 #include <raster/methods/shadow_lookup.h>
 #include <raster/methods/shadow_map.h>
@@ -80,12 +85,16 @@ bool faces_away(const geometry::Light& light, const Vec3& eye, const geometry::H
 }
 
 /// The scene's shadow-casting surfaces as occluders: planar polygons whole
-/// (filled even-odd), non-planar ones as their fan triangles.
-std::vector<Occluder> occluders_of(const geometry::SceneIndex& index, const SurfaceTable& table) {
+/// (filled even-odd), non-planar ones as their fan triangles; each with the
+/// ID Ikedo's buffer would store for it.
+std::vector<Occluder> occluders_of(const geometry::SceneIndex& index, const SurfaceTable& table,
+                                   IdGranularity granularity) {
   std::vector<Occluder> out;
-  for (std::size_t k = 0; k < table.entries.size(); ++k)
-    if (index.polygons()[table.entries[k].hit.polygon].casts_shadows)
-      out.push_back({table.polygons[k].vertices});
+  for (std::size_t k = 0; k < table.entries.size(); ++k) {
+    const std::uint32_t polygon = table.entries[k].hit.polygon;
+    if (index.polygons()[polygon].casts_shadows)
+      out.push_back({table.polygons[k].vertices, surface_id(index, polygon, granularity)});
+  }
   return out;
 }
 
@@ -113,6 +122,9 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   const ShadowMapOptions& mo = options.map;
   check_options(mo);
   const geometry::Scene& scene = index.scene();
+  check_map_variant(mo, scene);
+  const bool post = mo.variant == MapVariant::post_process;
+  const bool ids = mo.variant == MapVariant::polygon_id;
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
@@ -179,7 +191,10 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       s.polygon = hit.polygon;
       const geometry::HitTriangle tri = geometry::hit_triangle(index, hit);
       const bool casts = index.polygons()[hit.polygon].casts_shadows;
-      const Vec3 point = ray.origin + s.t * ray.direction;
+      // The point looked up: the visible one, or (post-process) the one the
+      // image's depth buffer gives back.
+      const Vec3 point =
+          post ? point_from_depth_buffer(ray, s.t) : ray.origin + s.t * ray.direction;
       for (std::uint32_t l = 0; l < lights; ++l) {
         const geometry::Light& light = scene.lights[l];
         Decided& d = decided[pixel * lights + l];
@@ -208,7 +223,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
 
   // 2. The depth views some sample reads; the others cost nothing.
   start = util::Clock::now();
-  const std::vector<Occluder> occluders = occluders_of(index, table);
+  const std::vector<Occluder> occluders = occluders_of(index, table, mo.id_granularity);
   const geometry::Box bounds = geometry::models_bounds(scene);
   const double near = 1e-7 * std::max(index.magnitude(), 1e-300);
   std::vector<std::vector<MapView>> views(lights);
@@ -228,7 +243,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
     maps[l].resize(views[l].size());
     for (std::size_t f = 0; f < views[l].size(); ++f) {
       if (!(needed[l].load() >> f & 1u)) continue;
-      maps[l][f] = rasterize_depth(views[l][f], occluders, options.threads);
+      maps[l][f] = rasterize_depth(views[l][f], occluders, options.threads, ids);
       ++stats.map_views;
       stats.map_texels += maps[l][f].depth.size();
       progress.advance();
@@ -242,6 +257,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   progress.phase("shading", static_cast<std::uint64_t>(rows.size()));
   for_each_row(rows, options.threads, [&](int j) {
     PixelSample sample(lights);
+    std::vector<std::uint32_t> in_range, lit_lights;  // the post-process's darkening
     std::uint64_t row_lookups = 0;
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
@@ -256,7 +272,9 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       sample.t = s.t;
       sample.normal = s.normal;
       sample.look = {model.color, model.specular, model.shininess};
-      const Receiver receiver{ray.origin + s.t * ray.direction, s.normal};
+      const Vec3 point = ray.origin + s.t * ray.direction;
+      const Receiver receiver{post ? point_from_depth_buffer(ray, s.t) : point, s.normal};
+      const std::uint32_t own_id = ids ? surface_id(index, s.polygon, mo.id_granularity) : 0;
       for (std::uint32_t l = 0; l < lights; ++l) {
         ShadowClass& c = sample.classes[l];
         if (frame.is_soft(l)) {
@@ -286,7 +304,9 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
           case Decided::lookup: {
             const int f = face[pixel * lights + l];
             const Offset offset = mo.dither ? dither_offset(dither_key(i, j, l)) : Offset{};
-            const double lit = lit_fraction(views[l][f], maps[l][f], receiver, mo, offset);
+            const double lit =
+                ids ? id_lit_fraction(views[l][f], maps[l][f], receiver, own_id, offset)
+                    : lit_fraction(views[l][f], maps[l][f], receiver, mo, offset);
             // The hard class: lit when at least half the filter sees the light.
             c = lit >= 0.5 ? ShadowClass::lit : ShadowClass::shadowed;
             ++row_lookups;
@@ -296,6 +316,24 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
         sample.counts[l] = c == ShadowClass::shadowed ? 1 : 0;
       }
       store_sample(scene, ray, sample, pixel, frame);
+      if (post) {
+        // Williams' post-process: the pixel as shaded before the shadows
+        // were known, then darkened where they were found.
+        in_range.clear();
+        lit_lights.clear();
+        for (std::uint32_t l = 0; l < lights; ++l) {
+          if (sample.classes[l] == ShadowClass::out_of_range) continue;
+          in_range.push_back(l);
+          if (sample.classes[l] == ShadowClass::lit) lit_lights.push_back(l);
+        }
+        const Vec3 normal = geometry::dot(s.normal, ray.direction) > 0 ? -s.normal : s.normal;
+        const geometry::Rgb c =
+            darken_after_shading(scene, sample.look, point, normal,
+                                 geometry::normalize(-ray.direction), in_range, lit_lights);
+        frame.beauty[3 * pixel + 0] = static_cast<float>(c.r);
+        frame.beauty[3 * pixel + 1] = static_cast<float>(c.g);
+        frame.beauty[3 * pixel + 2] = static_cast<float>(c.b);
+      }
     }
     lookups += row_lookups;
     progress.advance();

@@ -167,6 +167,16 @@ double lit_fraction(const MapView& view, const DepthMap& map, const Receiver& re
   return passes(at->z, stored, bias) ? 1 : 0;
 }
 
+double id_lit_fraction(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                       std::uint32_t own_id, Offset offset) {
+  const std::optional<ViewPoint> at = project(view, receiver.point);
+  if (!at) return 1;  // behind the light: nothing in this view lies between
+  const int i = clamp_texel(at->u + offset.du, map.size);
+  const int j = clamp_texel(at->v + offset.dv, map.size);
+  if (map.id_at(i, j) == own_id) return 1;
+  return passes(at->z, map.at(i, j), 0) ? 1 : 0;
+}
+
 double pcss_visibility(const MapView& view, const DepthMap& map, const Receiver& receiver,
                        double light_radius, const ShadowMapOptions& options) {
   const std::optional<ViewPoint> at = project(view, receiver.point);

@@ -40,6 +40,16 @@ Offset dither_offset(std::uint64_t key);
 double lit_fraction(const MapView& view, const DepthMap& map, const Receiver& receiver,
                     const ShadowMapOptions& options, Offset offset = {});
 
+/// Ikedo's ID buffer read at `receiver`, whose own ID is `own_id`: the
+/// texel holding the receiver (moved by `offset`: dither) is lit when it
+/// stores that ID, whatever the depths — so a surface never shadows itself,
+/// without any bias — and otherwise when the receiver's depth is at most the
+/// stored one with no bias (a different surface nearer the light shadows;
+/// one behind the receiver, or none, does not). 1 (lit) or 0. `map` must
+/// carry IDs (rasterize_depth with_ids).
+double id_lit_fraction(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                       std::uint32_t own_id, Offset offset = {});
+
 /// The widest blocker search and filter PCSS takes, in texels from the
 /// centre (views of area lights carry this margin).
 inline constexpr int kPcssMaxRadius = 32;

@@ -23,6 +23,7 @@ struct Projected {
   double c = 0;
   double zmin = 0, zmax = 0;  ///< depth range of the (clipped) outline
   int row0 = 0, row1 = 0;     ///< rows [row0, row1) whose centres it may cover
+  std::uint32_t id = 0;
 };
 
 /// Sutherland–Hodgman against z >= near. For one half-space the even-odd
@@ -47,6 +48,7 @@ std::optional<Projected> project_occluder(const MapView& view, const Occluder& o
   if (view.perspective) p = clip_near(p, view.near);
   if (p.size() < 3) return std::nullopt;
   Projected out;
+  out.id = occluder.id;
   out.normal = geometry::newell(p);
   Vec3 centroid{0, 0, 0};
   for (const Vec3& q : p) centroid = centroid + q;
@@ -95,6 +97,8 @@ void fill_rows(const MapView& view, const Projected& o, int j0, int j1, std::vec
       const int i1 =
           static_cast<int>(std::clamp(std::ceil(xs[k + 1] - 0.5), 0.0, double(map.size)));
       float* row = map.depth.data() + static_cast<std::size_t>(j) * map.size;
+      std::uint32_t* ids =
+          map.id.empty() ? nullptr : map.id.data() + static_cast<std::size_t>(j) * map.size;
       for (int i = i0; i < i1; ++i) {
         const double s = s0 + (i + 0.5) * texel;
         // The plane along the texel's ray; the clamp keeps an edge-on
@@ -104,7 +108,12 @@ void fill_rows(const MapView& view, const Projected& o, int j0, int j1, std::vec
                                           : (o.c - o.normal.x * s - o.normal.y * t) / o.normal.z;
         const float depth =
             static_cast<float>(std::isnan(z) ? o.zmin : std::clamp(z, o.zmin, o.zmax));
-        row[i] = std::min(row[i], depth);
+        if (!ids) {
+          row[i] = std::min(row[i], depth);
+        } else if (depth < row[i] || (depth == row[i] && o.id < ids[i])) {
+          row[i] = depth;
+          ids[i] = o.id;
+        }
       }
     }
   }
@@ -183,11 +192,12 @@ MapView directional_view(const Vec3& direction, const geometry::Box& bounds, int
   return v;
 }
 
-DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluders,
-                         unsigned threads) {
+DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
+                         bool with_ids) {
   DepthMap map;
   map.size = view.size();
   map.depth.assign(static_cast<std::size_t>(map.size) * map.size, kNoOccluder);
+  if (with_ids) map.id.assign(map.depth.size(), kNoId);
   std::vector<Projected> projected;
   projected.reserve(occluders.size());
   for (const Occluder& o : occluders)

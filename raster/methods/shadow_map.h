@@ -72,27 +72,36 @@ int cube_face(const geometry::Vec3& d);
 MapView directional_view(const geometry::Vec3& direction, const geometry::Box& bounds,
                          int resolution, int margin);
 
-/// A planar polygon (world space) that casts shadows into depth views.
+/// A planar polygon (world space) that casts shadows into depth views, and
+/// the ID Ikedo's buffer stores for it (its model's or its own).
 struct Occluder {
   std::vector<geometry::Vec3> vertices;
+  std::uint32_t id = 0;
 };
 
-/// Row-major depth buffer of one view; +infinity where nothing casts.
+/// Row-major depth buffer of one view; +infinity where nothing casts. With
+/// IDs (Ikedo's buffer), `id` holds the ID of the occluder whose depth is
+/// stored (kNoId where nothing casts); empty otherwise.
 struct DepthMap {
   int size = 0;
   std::vector<float> depth;
+  std::vector<std::uint32_t> id;
   float at(int i, int j) const { return depth[static_cast<std::size_t>(j) * size + i]; }
+  std::uint32_t id_at(int i, int j) const { return id[static_cast<std::size_t>(j) * size + i]; }
 };
 
 inline constexpr float kNoOccluder = std::numeric_limits<float>::infinity();
+inline constexpr std::uint32_t kNoId = std::numeric_limits<std::uint32_t>::max();
 
 /// The smallest view-space z of the occluders at every texel centre, each
 /// planar occluder filled even-odd (the parity of its fan, as everywhere in
 /// umbra). Depth at a texel centre is the occluder's plane along the texel's
 /// ray, clamped to the occluder's own depth range, rounded to float.
 /// Rows are filled in bands on up to `threads` threads; the result does not
-/// depend on their number (a minimum is order-free).
-DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluders,
-                         unsigned threads);
+/// depend on their number (a minimum is order-free). `with_ids`: also the
+/// ID of the nearest occluder per texel, equal depths going to the smaller
+/// ID (so the pair is a minimum too, order-free).
+DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
+                         bool with_ids = false);
 
 }  // namespace umbra::raster

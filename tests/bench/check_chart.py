@@ -54,6 +54,16 @@ def main():
     for name in sweeps:
         if not (out / f"sweep-{name}.png").stat().st_size:
             fail(f"sweep-{name}.png is empty")
+    # The source papers' map variants (issue 22) on every hard-light scene.
+    for name in scenes:
+        if name.startswith("soft"):
+            continue
+        variants = {r.get("map_variant") for r in rows
+                    if r["name"] == name and r["method"] == "map"}
+        if not {"depth", "post", "id"} <= variants:
+            fail(f"{name}: map variants {sorted(v for v in variants if v)}")
+    if "Shadow-map variants" not in (out / "summary.md").read_text():
+        fail("summary.md lacks the map variants' table")
     if "soft" not in scenes:
         fail("no area-light scene")
     if "| default |" not in (out / "summary.md").read_text():

@@ -5,6 +5,7 @@
 #include <geometry/scene.h>
 
 #include <cstddef>
+#include <cstdint>
 
 namespace umbra::test {
 
@@ -45,6 +46,23 @@ inline Model floor_quad(double half, double y) {
   Model m;
   m.vertices = {{-half, y, -half}, {-half, y, half}, {half, y, half}, {half, y, -half}};
   m.polygons = {{0, 1, 2, 3}};
+  return m;
+}
+
+/// A closed L-shaped prism, one model: the profile (0,0) (3,0) (3,1) (1,1)
+/// (1,3) (0,3) in x and y, lifted by `lift` in y, extruded over z in
+/// [-1, 1]. Its polygons: the back cap (z = -1), the front cap (z = 1), then
+/// the six sides, side k on profile edge k (side 2, polygon 4, is the top
+/// of the foot, y = 1 + lift, which the upright arm shadows under a light
+/// from the upper left: a self-shadow within one object).
+inline Model l_prism(double lift) {
+  const double profile[6][2] = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  Model m;
+  for (const double z : {-1.0, 1.0})
+    for (const auto& p : profile) m.vertices.push_back({p[0], p[1] + lift, z});
+  m.polygons = {{5, 4, 3, 2, 1, 0}, {6, 7, 8, 9, 10, 11}};
+  for (std::uint32_t k = 0; k < 6; ++k)
+    m.polygons.push_back({k, (k + 1) % 6, (k + 1) % 6 + 6, k + 6});
   return m;
 }
 

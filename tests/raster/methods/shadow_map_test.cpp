@@ -8,6 +8,7 @@
 #include <raster/methods/shadow_map.h>
 #include <raster/render.h>
 #include <raster/validate.h>
+#include <tests/support/map_scenes.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
@@ -22,58 +23,12 @@ namespace {
 using geometry::Vec3;
 
 using test::box;
-
-/// An 8 x 8 floor at y = 0 with a unit box standing on it (touching the
-/// floor along its whole base: contact shadows), seen from above and aside.
-geometry::Scene floor_and_box(const geometry::Light& light) {
-  geometry::Scene s;
-  s.camera = {.eye = {0, 6, 6},
-              .look_at = {0, 0, 0},
-              .up = {0, 1, 0},
-              .fov_y_deg = 30,
-              .width = 96,
-              .height = 96};
-  s.lights.push_back(light);
-  geometry::Model floor;
-  floor.vertices = {{-4, 0, -4}, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}};
-  floor.polygons = {{0, 1, 2, 3}};
-  s.models = {floor, box({-0.5, 0, -0.5}, {0.5, 1, 0.5})};
-  return s;
-}
-
-geometry::Light point_light(const Vec3& p) {
-  geometry::Light l;
-  l.position = p;
-  return l;
-}
-
-geometry::Light directional_light(const Vec3& d) {
-  geometry::Light l;
-  l.type = geometry::LightType::directional;
-  l.direction = d;
-  return l;
-}
-
-RenderOptions map_options(const ShadowMapOptions& map, unsigned threads = 2) {
-  RenderOptions o;
-  o.method = Method::map;
-  o.threads = threads;
-  o.map = map;
-  return o;
-}
-
-ValidationReport score(const geometry::Scene& scene, const Frame& frame) {
-  return validate_render(scene, shadow_channels(frame), {});
-}
-
-/// Whether the oracle's class changes within `radius` pixels of (i, j).
-bool near_shadow_boundary(const Frame& exact, int i, int j, int radius, std::size_t light) {
-  const float here = exact.shadow(light, exact.pixel(i, j));
-  for (int b = std::max(0, j - radius); b <= std::min(exact.height - 1, j + radius); ++b)
-    for (int a = std::max(0, i - radius); a <= std::min(exact.width - 1, i + radius); ++a)
-      if (exact.shadow(light, exact.pixel(a, b)) != here) return true;
-  return false;
-}
+using test::directional_light;
+using test::floor_and_box;
+using test::map_options;
+using test::near_shadow_boundary;
+using test::point_light;
+using test::score;
 
 TEST(ShadowMap, FloorAndBoxAgreeWithTheOracleExceptAtShadowEdges) {
   const geometry::Scene scene = floor_and_box(point_light({2.5, 5, 1.5}));
