@@ -115,14 +115,29 @@ u64 estimate_render_bytes(const geometry::Scene& scene, const RenderOptions& opt
   // The encoded file in memory before it is written: EXR at most its raw
   // floats (zip only shrinks them), plus the 64-row block; PNG its bytes.
   bytes = add(bytes, exr ? mul(pixels, kFramePixel + lights * kFrameLightPixel) : mul(pixels, 6));
+  // Coloured shadows (docs/transmittance.md): τ's three floats per light
+  // pixel in the frame and the EXR, and for the volume method a depth
+  // count per (light, tinted model) beside each light's own.
+  u64 tinted_models = 0;
+  for (const geometry::Model& m : scene.models)
+    tinted_models += m.casts_shadows && geometry::tinted(m.transmittance) ? 1 : 0;
+  if (tinted_models > 0) {
+    bytes = add(bytes, mul(rendered_light_pixels, 12));
+    if (exr) bytes = add(bytes, mul(pixels, 12 * lights));
+    if (options.method == Method::volume)
+      bytes = add(bytes, mul(rendered_light_pixels, 4 * tinted_models));
+  }
   if (options.method == Method::volume && options.shadows)
     bytes = add(bytes, volume_bytes_all_lights(scene));
   if (options.method == Method::map) {
     // Every view a light may need (six cube faces of a point light or of
     // an area light's centroid, one view of a directional light), float
     // texels with their margins (PCSS's wider for an area light), and
-    // Ikedo's IDs beside them (4 bytes more a texel).
-    const u64 texel_bytes = options.map.variant == MapVariant::polygon_id ? 8 : 4;
+    // Ikedo's IDs beside them (4 bytes more a texel); with tinted models
+    // the depth variant keeps his transparency buffer too (a depth and a
+    // model a texel).
+    u64 texel_bytes = options.map.variant == MapVariant::polygon_id ? 8 : 4;
+    if (tinted_models > 0 && options.map.variant == MapVariant::depth) texel_bytes += 8;
     for (const geometry::Light& light : scene.lights) {
       const bool area = light.type == geometry::LightType::area;
       const u64 side =

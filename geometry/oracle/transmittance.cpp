@@ -22,7 +22,8 @@ Rgb transmittance_product(const Scene& scene, std::span<const ModelCount> counts
       tau.r *= t.r;
       tau.g *= t.g;
       tau.b *= t.b;
-      if (tau.r == 0 && tau.g == 0 && tau.b == 0) return tau;  // stays 0: a pathological count costs nothing
+      if (tau.r == 0 && tau.g == 0 && tau.b == 0)
+        return tau;  // stays 0: a pathological count costs nothing
     }
   }
   return tau;
@@ -87,8 +88,7 @@ TransmittanceAnswer transmittance_sample(const SceneIndex& index, const SampleRa
     return answer;
   }
   const Rgb& hit_t = scene.models[index.polygons()[hit.polygon].model].transmittance;
-  answer.boundary =
-      s.hard_boundary || touched_tinted || (s.light_in_hit_plane && !clear(hit_t));
+  answer.boundary = s.hard_boundary || touched_tinted || (s.light_in_hit_plane && !clear(hit_t));
   return answer;
 }
 

@@ -84,16 +84,24 @@ bool faces_away(const geometry::Light& light, const Vec3& eye, const geometry::H
   return at_light != geometry::Sign::zero && at_light == -at_eye;
 }
 
+/// Which casting surfaces go into a depth view: all, or (Ikedo's
+/// transparency buffer beside an opaque view) the opaque or the tinted ones.
+enum class Casters : std::uint8_t { all, opaque, tinted };
+
 /// The scene's shadow-casting surfaces as occluders: planar polygons whole
 /// (filled even-odd), non-planar ones as their fan triangles; each with the
-/// ID Ikedo's buffer would store for it.
+/// ID Ikedo's buffer would store for it (the tinted ones: their model).
 std::vector<Occluder> occluders_of(const geometry::SceneIndex& index, const SurfaceTable& table,
-                                   IdGranularity granularity) {
+                                   IdGranularity granularity, Casters which = Casters::all) {
   std::vector<Occluder> out;
   for (std::size_t k = 0; k < table.entries.size(); ++k) {
     const std::uint32_t polygon = table.entries[k].hit.polygon;
-    if (index.polygons()[polygon].casts_shadows)
-      out.push_back({table.polygons[k].vertices, surface_id(index, polygon, granularity)});
+    const geometry::IndexedPolygon& p = index.polygons()[polygon];
+    if (!p.casts_shadows) continue;
+    const bool tinted = geometry::tinted(index.scene().models[p.model].transmittance);
+    if ((which == Casters::opaque && tinted) || (which == Casters::tinted && !tinted)) continue;
+    out.push_back({table.polygons[k].vertices,
+                   which == Casters::tinted ? p.model : surface_id(index, polygon, granularity)});
   }
   return out;
 }
@@ -223,7 +231,16 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
 
   // 2. The depth views some sample reads; the others cost nothing.
   start = util::Clock::now();
-  const std::vector<Occluder> occluders = occluders_of(index, table, mo.id_granularity);
+  // Ikedo's transparency buffer (the depth variant in a scene with a
+  // tinted model): each view twice, the opaque casters' depths and the
+  // tinted casters' nearest depth with its model (docs/transmittance.md).
+  const bool transparency = frame.tinted && mo.variant == MapVariant::depth;
+  const std::vector<Occluder> occluders =
+      occluders_of(index, table, mo.id_granularity, transparency ? Casters::opaque : Casters::all);
+  const std::vector<Occluder> tinted_occluders =
+      transparency ? occluders_of(index, table, mo.id_granularity, Casters::tinted)
+                   : std::vector<Occluder>{};
+  std::vector<std::vector<DepthMap>> tint_maps(lights);
   const geometry::Box bounds = geometry::models_bounds(scene);
   const double near = 1e-7 * std::max(index.magnitude(), 1e-300);
   std::vector<std::vector<MapView>> views(lights);
@@ -241,11 +258,16 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       views[l] = {directional_view(light.direction, bounds, mo.resolution, view_margin(mo, light))};
     }
     maps[l].resize(views[l].size());
+    if (transparency) tint_maps[l].resize(views[l].size());
     for (std::size_t f = 0; f < views[l].size(); ++f) {
       if (!(needed[l].load() >> f & 1u)) continue;
       maps[l][f] = rasterize_depth(views[l][f], occluders, options.threads, ids);
       ++stats.map_views;
       stats.map_texels += maps[l][f].depth.size();
+      if (transparency) {
+        tint_maps[l][f] = rasterize_depth(views[l][f], tinted_occluders, options.threads, true);
+        stats.map_texels += tint_maps[l][f].depth.size();
+      }
       progress.advance();
     }
   }
@@ -277,6 +299,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       const std::uint32_t own_id = ids ? surface_id(index, s.polygon, mo.id_granularity) : 0;
       for (std::uint32_t l = 0; l < lights; ++l) {
         ShadowClass& c = sample.classes[l];
+        sample.tau[l] = {0, 0, 0};  // read only where shadowed in a tinted frame
         if (frame.is_soft(l)) {
           // An area light: PCSS's estimate of V (1 where nothing was looked up).
           double v = 1;
@@ -310,6 +333,14 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
             // The hard class: lit when at least half the filter sees the light.
             c = lit >= 0.5 ? ShadowClass::lit : ShadowClass::shadowed;
             ++row_lookups;
+            if (transparency && c == ShadowClass::lit &&
+                lit_fraction(views[l][f], tint_maps[l][f], receiver, mo, offset) < 0.5) {
+              // Behind the nearest tinted occluder, in front of every
+              // opaque one: its T alone (one layer, as Ikedo's buffer has).
+              c = ShadowClass::shadowed;
+              const std::uint32_t m = stored_id(views[l][f], tint_maps[l][f], receiver, offset);
+              if (m != kNoId) sample.tau[l] = scene.models[m].transmittance;
+            }
             break;
           }
         }

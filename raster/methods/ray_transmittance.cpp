@@ -34,9 +34,8 @@ geometry::Rgb tau_of(const geometry::SceneIndex& index, TintedHits& hits) {
 std::vector<std::uint8_t> tinted_polygons(const geometry::SceneIndex& index) {
   std::vector<std::uint8_t> out;
   for (const geometry::IndexedPolygon& p : index.polygons())
-    out.push_back(p.casts_shadows && geometry::tinted(index.scene().models[p.model].transmittance)
-                      ? 1
-                      : 0);
+    out.push_back(
+        p.casts_shadows && geometry::tinted(index.scene().models[p.model].transmittance) ? 1 : 0);
   return out;
 }
 

@@ -177,6 +177,14 @@ double id_lit_fraction(const MapView& view, const DepthMap& map, const Receiver&
   return passes(at->z, map.at(i, j), 0) ? 1 : 0;
 }
 
+std::uint32_t stored_id(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                        Offset offset) {
+  const std::optional<ViewPoint> at = project(view, receiver.point);
+  if (!at) return kNoId;
+  return map.id_at(clamp_texel(at->u + offset.du, map.size),
+                   clamp_texel(at->v + offset.dv, map.size));
+}
+
 double pcss_visibility(const MapView& view, const DepthMap& map, const Receiver& receiver,
                        double light_radius, const ShadowMapOptions& options) {
   const std::optional<ViewPoint> at = project(view, receiver.point);

@@ -50,6 +50,14 @@ double lit_fraction(const MapView& view, const DepthMap& map, const Receiver& re
 double id_lit_fraction(const MapView& view, const DepthMap& map, const Receiver& receiver,
                        std::uint32_t own_id, Offset offset = {});
 
+/// The ID stored at the texel holding `receiver` (moved by `offset`), as
+/// id_lit_fraction reads it; kNoId where nothing casts or the receiver is
+/// behind the view. Ikedo's transparency buffer keeps the nearest tinted
+/// occluder's model there, whose transmittance tints the light
+/// (docs/transmittance.md).
+std::uint32_t stored_id(const MapView& view, const DepthMap& map, const Receiver& receiver,
+                        Offset offset = {});
+
 /// The widest blocker search and filter PCSS takes, in texels from the
 /// centre (views of area lights carry this margin).
 inline constexpr int kPcssMaxRadius = 32;

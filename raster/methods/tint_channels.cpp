@@ -27,8 +27,9 @@ TintChannels::TintChannels(const geometry::Scene& scene, const geometry::ShadowV
       if (!model.casts_shadows || !geometry::tinted(model.transmittance)) continue;
       if (volumes.extrusion[l][m] == 0) continue;  // no volume for this light
       const auto c = static_cast<std::uint32_t>(light_.size());
-      const auto found = std::find_if(at_eye.begin(), at_eye.end(),
-                                      [&](const geometry::ModelCount& mc) { return mc.model == m; });
+      const auto found =
+          std::find_if(at_eye.begin(), at_eye.end(),
+                       [&](const geometry::ModelCount& mc) { return mc.model == m; });
       const int count = found == at_eye.end() ? 0 : found->count;
       light_.push_back(l);
       model_.push_back(m);
@@ -43,9 +44,9 @@ TintChannels::TintChannels(const geometry::Scene& scene, const geometry::ShadowV
 std::uint32_t TintChannels::of(const geometry::ShadowPolygon& polygon) const {
   // A light's tinted channels are in model order.
   const std::vector<std::uint32_t>& tinted = tinted_[polygon.light];
-  const auto it = std::lower_bound(
-      tinted.begin(), tinted.end(), polygon.model,
-      [this](std::uint32_t c, std::uint32_t model) { return model_[c] < model; });
+  const auto it =
+      std::lower_bound(tinted.begin(), tinted.end(), polygon.model,
+                       [this](std::uint32_t c, std::uint32_t model) { return model_[c] < model; });
   return it != tinted.end() && model_[*it] == polygon.model ? *it : polygon.light;
 }
 

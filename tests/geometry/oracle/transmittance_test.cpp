@@ -79,7 +79,8 @@ TEST(Transmittance, AClosedTintedBoxIsCrossedTwice) {
   Model box;
   box.vertices = {{-1, 1, -1}, {1, 1, -1}, {-1, 2, -1}, {1, 2, -1},
                   {-1, 1, 1},  {1, 1, 1},  {-1, 2, 1},  {1, 2, 1}};
-  box.polygons = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}};
+  box.polygons = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 4, 6, 2},
+                  {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}};
   box.transmittance = kAmber;
   const TransmittanceAnswer under = at_floor(scene_with({box}), 0.5);
   EXPECT_FALSE(under.boundary);

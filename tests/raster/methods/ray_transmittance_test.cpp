@@ -50,8 +50,8 @@ TEST(RayTransmittance, ADiagonalHitCountsThePolygonOnce) {
 
 TEST(RayTransmittance, AgreesWithTheOracleOnTheTintedScenes) {
   for (const char* name : {"coloured", "eye_in_tinted_box"}) {
-    const geometry::Scene scene = geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) /
-                                                       "scenes/tinted" / (std::string(name) + ".json"));
+    const geometry::Scene scene = geometry::load_scene(
+        std::filesystem::path(UMBRA_DATA_DIR) / "scenes/tinted" / (std::string(name) + ".json"));
     const Frame frame = render(scene, {.method = Method::ray, .threads = 2});
     const ValidationReport report = validate_render(scene, shadow_channels(frame), {});
     for (const LightReport& l : report.lights) {
