@@ -53,7 +53,7 @@ std::vector<NamedScene> chart_scenes(const Args& args) {
   std::vector<NamedScene> out;
   const fs::path data = UMBRA_DATA_DIR;
   const std::vector<std::string> files =
-      args.quick ? std::vector<std::string>{"default.json", "soft.json"}
+      args.quick ? std::vector<std::string>{"default.json", "soft.json", "tinted/coloured.json"}
                  : std::vector<std::string>{"default.json",
                                             "two_lights.json",
                                             "bergeron/fig04_limited_light.json",
@@ -61,7 +61,8 @@ std::vector<NamedScene> chart_scenes(const Args& args) {
                                             "bergeron/fig14_eye_under_closed_cube.json",
                                             "bergeron/fig15_sphere_of_influence.json",
                                             "soft.json",
-                                            "soft_long_light.json"};
+                                            "soft_long_light.json",
+                                            "tinted/coloured.json"};
   for (const std::string& f : files) {
     out.push_back({fs::path(f).stem().string(), geometry::load_scene(data / "scenes" / f)});
     // The quick smoke's area light at 80 x 60: its exact truth in a second.
@@ -101,7 +102,7 @@ std::string csv_row(const std::string& kind, const std::string& name, const std:
       row.scored() ? 100.0 * static_cast<double>(row.errors()) / row.scored() : 0.0;
   return fmt::format(
       "{},{},\"{}\",{},{},{},{},{},\"{}\",{},{},{},{},{},{},{},{},{:.6f},{},{},{},{},{},{},{},{},"
-      "{},{},{},{},{}\n",
+      "{},{},{},{},{},{},{},{}\n",
       kind, name, parameter, value, scene.lights.size(), scene.camera.width, scene.camera.height,
       row.setting.method, row.setting.curve, map ? std::to_string(o.map.resolution) : "",
       map ? fmt::format("{}", o.map.constant_bias) : "",
@@ -113,14 +114,18 @@ std::string csv_row(const std::string& kind, const std::string& name, const std:
       ray ? std::to_string(o.ray.area_samples) : "",
       row.soft_scored ? fmt::format("{:.6g}", row.soft_error_sum / row.soft_scored) : "",
       row.soft_scored ? fmt::format("{:.6g}", row.soft_max_error) : "",
-      map ? raster::map_variant_name(o.map) : "");
+      map ? raster::map_variant_name(o.map) : "",
+      row.tau_scored ? std::to_string(row.tau_mismatches) : "",
+      row.tau_scored ? fmt::format("{:.6g}", row.tau_error_sum / row.tau_scored) : "",
+      row.tau_scored ? fmt::format("{:.6g}", row.tau_max_error) : "");
 }
 
 constexpr const char* kHeader =
     "kind,name,parameter,value,lights,width,height,method,curve,map_resolution,"
     "map_constant_bias,map_slope_bias,map_lookup,map_pcf,ray_epsilon,runs,seconds,median_s,"
     "compared,boundary,scored,false_lit,false_shadowed,wrong_range,errors,error_percent,scored_"
-    "flag,ray_area_samples,soft_mean_error,soft_max_error,map_variant\n";
+    "flag,ray_area_samples,soft_mean_error,soft_max_error,map_variant,tau_mismatches,tau_mean_"
+    "error,tau_max_error\n";
 
 void report(const std::string& name, const std::string& value, const Row& row) {
   std::fprintf(stderr, "  %-28s %-8s %-40s %9.1f ms  %6llu errors of %llu\n", name.c_str(),

@@ -149,6 +149,13 @@ Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
       row.soft_error_sum += l.sum_error;
       row.soft_max_error = std::max(row.soft_max_error, l.max_error);
     }
+    if (l.tinted) {
+      row.tau_mismatches += l.tau_mismatches;
+      row.tau_only += l.mismatches - (l.false_lit + l.false_shadowed + l.wrong_range);
+      row.tau_scored += l.scored();
+      row.tau_error_sum += l.tau_sum_error;
+      row.tau_max_error = std::max(row.tau_max_error, l.tau_max_error);
+    }
     row.compared += l.compared;
     row.boundary += l.boundary;
     row.false_lit += l.false_lit;

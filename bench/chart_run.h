@@ -27,8 +27,14 @@ struct Row {
   /// sum and largest of |V − V_exact| over all their scored samples.
   std::uint64_t soft_mismatches = 0, soft_scored = 0;
   double soft_error_sum = 0, soft_max_error = 0;
+  /// Scenes with a tinted model (docs/transmittance.md): scored samples
+  /// whose τ errs by more than 1e-6 in a channel, those of them whose class
+  /// is right (counted in errors() once), and the sum and largest of each
+  /// sample's largest channel error.
+  std::uint64_t tau_mismatches = 0, tau_only = 0, tau_scored = 0;
+  double tau_error_sum = 0, tau_max_error = 0;
   std::uint64_t errors() const {
-    return false_lit + false_shadowed + wrong_range + soft_mismatches;
+    return false_lit + false_shadowed + wrong_range + soft_mismatches + tau_only;
   }
   std::uint64_t scored() const { return compared - boundary; }
 };

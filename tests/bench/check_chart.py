@@ -40,6 +40,12 @@ def main():
                 fail(f"{r['name']} {r['curve']}: no visible-fraction error")
             if r["method"] == "volume" and float(r["soft_max_error"]) > 1e-6:
                 fail(f"volume's V errs by {r['soft_max_error']} on {r['name']}")
+        if r["name"] == "coloured":
+            # Coloured shadows carry per-channel τ errors; the volume's none.
+            if not r["tau_mismatches"] or not r["tau_max_error"]:
+                fail(f"coloured {r['curve']}: no transmittance error")
+            if r["method"] == "volume" and float(r["tau_max_error"]) > 1e-6:
+                fail(f"volume's τ errs by {r['tau_max_error']} on coloured")
     scenes = {n for (k, n) in by_name if k == "scene"}
     sweeps = {n for (k, n) in by_name if k != "scene"}
     if sweeps != SWEEPS:
@@ -66,6 +72,8 @@ def main():
         fail("summary.md lacks the map variants' table")
     if "soft" not in scenes:
         fail("no area-light scene")
+    if "coloured" not in scenes:
+        fail("no scene with transmittance")
     if "| default |" not in (out / "summary.md").read_text():
         fail("summary.md lacks the default scene")
     print(f"check_chart: {len(rows)} rows, {len(scenes)} scenes, {len(sweeps)} sweeps: ok")

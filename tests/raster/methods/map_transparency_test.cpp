@@ -26,8 +26,8 @@ int pixels_with(const Frame& frame, geometry::Rgb t) {
 }
 
 TEST(MapTransparency, OneTintedLayerPerTexel) {
-  const geometry::Scene scene = geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) /
-                                                     "scenes/tinted/coloured.json");
+  const geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/tinted/coloured.json");
   const Frame volume = render(scene, {.method = Method::volume, .threads = 2});
   const Frame map = render(scene, {.method = Method::map, .threads = 2});
   ASSERT_TRUE(map.tinted);
@@ -46,7 +46,8 @@ TEST(MapTransparency, OneTintedLayerPerTexel) {
   EXPECT_EQ(pixels_with(map, stacked), 0);
   // The validator counts them: at least the cube's samples are τ errors.
   const ValidationReport report = validate_render(scene, shadow_channels(map), {});
-  EXPECT_GT(report.lights[0].tau_mismatches, static_cast<std::uint64_t>(pixels_with(volume, cube_twice)));
+  EXPECT_GT(report.lights[0].tau_mismatches,
+            static_cast<std::uint64_t>(pixels_with(volume, cube_twice)));
 }
 
 }  // namespace
