@@ -25,12 +25,17 @@ Vec3 area_light_centre(const Light& light) {
   return sum * (1.0 / static_cast<double>(light.vertices.size()));
 }
 
-Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
-          const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit,
-          std::span<const float> visible, std::span<const Rgb> tint) {
+namespace {
+
+/// shade's sum over the lit lights; `Tinted` multiplies each by its τ. Two
+/// instances, so that an opaque scene's loop has no test of `tint` per
+/// light (it was ~4 instructions of every (pixel, light) pair).
+template <bool Tinted>
+void add_lights(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
+                const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit,
+                std::span<const float> visible, std::span<const Rgb> tint, Rgb& out) {
   const Rgb& color = look.color;
   const bool glossy = look.specular.r > 0 || look.specular.g > 0 || look.specular.b > 0;
-  Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
   for (std::size_t k = 0; k < lit.size(); ++k) {
     const Light& light = scene.lights[lit[k]];
     Vec3 to_light;
@@ -51,12 +56,32 @@ Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& poi
       const Vec3 h = normalize(l + to_eye);
       highlight = std::pow(std::max(0.0, dot(normal, h)), look.shininess);
     }
-    // τ per channel (exactly 1 untinted: x · 1 is x, the same bits).
-    const Rgb t = tint.empty() ? Rgb{1, 1, 1} : tint[k];
-    out.r += light.intensity.r * factor * t.r * (color.r * cosine + look.specular.r * highlight);
-    out.g += light.intensity.g * factor * t.g * (color.g * cosine + look.specular.g * highlight);
-    out.b += light.intensity.b * factor * t.b * (color.b * cosine + look.specular.b * highlight);
+    if constexpr (Tinted) {
+      // Through tinted polygons: τ per channel (1 where it is lit
+      // outright: x · 1 is x, the same bits as untinted).
+      const Rgb& t = tint[k];
+      out.r += light.intensity.r * factor * t.r * (color.r * cosine + look.specular.r * highlight);
+      out.g += light.intensity.g * factor * t.g * (color.g * cosine + look.specular.g * highlight);
+      out.b += light.intensity.b * factor * t.b * (color.b * cosine + look.specular.b * highlight);
+    } else {
+      out.r += light.intensity.r * factor * (color.r * cosine + look.specular.r * highlight);
+      out.g += light.intensity.g * factor * (color.g * cosine + look.specular.g * highlight);
+      out.b += light.intensity.b * factor * (color.b * cosine + look.specular.b * highlight);
+    }
   }
+}
+
+}  // namespace
+
+Rgb shade(const geometry::Scene& scene, const SurfaceLook& look, const Vec3& point,
+          const Vec3& normal, const Vec3& to_eye, std::span<const std::uint32_t> lit,
+          std::span<const float> visible, std::span<const Rgb> tint) {
+  const Rgb& color = look.color;
+  Rgb out{scene.ambient.r * color.r, scene.ambient.g * color.g, scene.ambient.b * color.b};
+  if (tint.empty())
+    add_lights<false>(scene, look, point, normal, to_eye, lit, visible, tint, out);
+  else
+    add_lights<true>(scene, look, point, normal, to_eye, lit, visible, tint, out);
   return out;
 }
 

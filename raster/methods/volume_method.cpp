@@ -195,11 +195,14 @@ Frame render_volume(const geometry::SceneIndex& index,
       if (count) sample.counts[k] = *count;
     }
   };
+  const bool tinted_frame = frame.tinted;
   // Light l's counts at pixel (i, j) from the scanline, each channel's
   // eye count added: the opaque channel's is `opaque` (read by the caller
   // where it knows the place); its class, and in a tinted frame τ.
+  // Out of line: inlined, it cost the opaque frames' loop registers.
   const auto decide_from_counts = [&](int opaque, int i, int j, std::size_t pixel, std::size_t k,
-                                      std::uint32_t l, PixelSample& sample) {
+                                      std::uint32_t l, PixelSample& sample)
+      __attribute__((noinline)) {
     int total = opaque;
     const std::vector<std::uint32_t>& tinted = channels.tinted_of(l);
     if (!tinted.empty()) {
@@ -289,7 +292,8 @@ Frame render_volume(const geometry::SceneIndex& index,
             sample.counts[k] = 0;
             continue;
           }
-          if ((doubt & kLightsUncertain) && (scan.light_mask[pixel] & channels.bits(l))) {
+          if ((doubt & kLightsUncertain) &&
+              (scan.light_mask[pixel] & (tinted_frame ? channels.bits(l) : light_bit(l)))) {
             // A shadow polygon of this light was too close to call: its
             // count again, exactly, at the visible point that stands.
             ++row_recounts;
@@ -298,10 +302,17 @@ Frame render_volume(const geometry::SceneIndex& index,
           }
           // The opaque channel is light l's, at the same place as in the
           // frame's windows (tint_channels.h).
-          decide_from_counts(
+          const int count =
               channels.eye_count(l) + (whole ? scan.count[row_slot[k] + static_cast<std::size_t>(i)]
-                                             : scan.count_at(l, i, j)),
-              i, j, pixel, k, l, sample);
+                                             : scan.count_at(l, i, j));
+          if (tinted_frame) {
+            decide_from_counts(count, i, j, pixel, k, l, sample);
+          } else {
+            // Without tinted models, inline: (pixel, light) pairs run to
+            // millions a frame, and the call was 2 % of an opaque one.
+            sample.counts[k] = count;
+            sample.classes[k] = class_of_count(count, pixel, l);
+          }
         }
         store_sample(scene, ray, sample, pixel, frame);
         continue;
