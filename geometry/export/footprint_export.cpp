@@ -36,11 +36,24 @@ std::string ply_text(const Footprints& f) {
     columns[4].values.push_back(r.cls == FootprintClass::lit ? 1 : 0);
     columns[5].values.push_back(r.facing);
   }
+  // Coloured shadows: τ per channel as doubles (the exact product of the
+  // models' T, docs/transmittance.md); absent for opaque scenes, whose
+  // files keep their layout.
+  std::vector<FaceReal> tau;
+  if (f.transmittance) {
+    tau = {{"tau_r", {}}, {"tau_g", {}}, {"tau_b", {}}};
+    for (const FootprintRegion& r : f.regions) {
+      tau[0].values.push_back(r.transmittance.r);
+      tau[1].values.push_back(r.transmittance.g);
+      tau[2].values.push_back(r.transmittance.b);
+    }
+  }
   const std::array<std::string, 2> comments{
       "umbra shadow footprints: one face per lit or shadowed region of a receiver",
-      "class 1 lit, 0 shadowed; facing +1 light in front, -1 behind, 0 in the plane; triangle "
-      "-1 for a planar polygon"};
-  return ply_bytes(indexed, comments, columns);
+      std::string("class 1 lit, 0 shadowed; facing +1 light in front, -1 behind, 0 in the plane; "
+                  "triangle -1 for a planar polygon") +
+          (f.transmittance ? "; tau_r/g/b the light passed per channel (1 lit, 0 opaque)" : "")};
+  return ply_bytes(indexed, comments, columns, tau);
 }
 
 bool is_lit(const FootprintRegion& r) { return r.cls == FootprintClass::lit; }

@@ -21,6 +21,14 @@ using Json = nlohmann::json;
 
 constexpr std::array<const char*, 7> kAttributes{"_REGION",   "_LIGHT", "_MODEL", "_POLYGON",
                                                  "_TRIANGLE", "_CLASS", "_FACING"};
+/// With coloured shadows (Footprints::transmittance), τ per channel too.
+constexpr std::array<const char*, 3> kTauAttributes{"_TAU_R", "_TAU_G", "_TAU_B"};
+
+std::vector<const char*> attribute_names(bool tau) {
+  std::vector<const char*> names(kAttributes.begin(), kAttributes.end());
+  if (tau) names.insert(names.end(), kTauAttributes.begin(), kTauAttributes.end());
+  return names;
+}
 
 /// The OBJ sidecar's colours (Kd 1 0.9 0.7 and 0.1 0.15 0.4, sRGB) in the
 /// linear values glTF's baseColorFactor holds.
@@ -40,21 +48,24 @@ std::array<float, 3> unit_normal(const std::vector<Vec3>& ring) {
 
 class FootprintGltf {
  public:
-  explicit FootprintGltf(const std::string& name) : name_(name) {}
+  FootprintGltf(const std::string& name, bool tau)
+      : name_(name), attributes_(attribute_names(tau)) {}
 
   /// The regions of one (light, class) as a node, mesh and material.
   void add_group(const Footprints& f, std::uint32_t light, bool lit,
                  const std::vector<std::size_t>& regions) {
-    GltfFaceVertices vertices({kAttributes.begin(), kAttributes.end()}, name_, "region");
+    GltfFaceVertices vertices(attributes_, name_, "region");
     std::vector<float> normals;
     std::vector<std::uint32_t> indices;
     for (const std::size_t i : regions) {
       const FootprintRegion& r = f.regions[i];
-      const std::uint32_t base = vertices.add_face(
-          i, r.vertices,
-          {static_cast<double>(i), static_cast<double>(r.light), static_cast<double>(r.model),
-           static_cast<double>(r.polygon), static_cast<double>(r.triangle), is_lit(r) ? 1.0 : 0.0,
-           static_cast<double>(r.facing)});
+      std::vector<double> values{static_cast<double>(i),          static_cast<double>(r.light),
+                                 static_cast<double>(r.model),    static_cast<double>(r.polygon),
+                                 static_cast<double>(r.triangle), is_lit(r) ? 1.0 : 0.0,
+                                 static_cast<double>(r.facing)};
+      if (f.transmittance)
+        values.insert(values.end(), {r.transmittance.r, r.transmittance.g, r.transmittance.b});
+      const std::uint32_t base = vertices.add_face(i, r.vertices, values);
       const std::array<float, 3> normal = unit_normal(r.vertices);
       for (std::size_t k = 0; k < r.vertices.size(); ++k)
         normals.insert(normals.end(), normal.begin(), normal.end());
@@ -92,7 +103,7 @@ class FootprintGltf {
          {{"format", "umbra shadow footprints"},
           {"version", 1},
           {"regions", total_regions},
-          {"attributes", kAttributes},
+          {"attributes", attributes_},
           {"layout",
            "one node, mesh, triangle primitive and material per (light, class) with regions, "
            "named light<L>_lit or light<L>_shadowed; each region has its own consecutive "
@@ -117,6 +128,7 @@ class FootprintGltf {
 
  private:
   std::string name_;
+  std::vector<const char*> attributes_;  ///< kAttributes, and kTauAttributes with coloured shadows
   GltfBuffer buffer_;
   Json materials_ = Json::array();
   Json meshes_ = Json::array();
@@ -136,7 +148,7 @@ std::string gltf_footprint_bytes(const Footprints& footprints, bool binary,
     const FootprintRegion& r = footprints.regions[i];
     groups[{r.light, !is_lit(r)}].push_back(i);  // lit (false) before shadowed
   }
-  FootprintGltf writer(name);
+  FootprintGltf writer(name, footprints.transmittance);
   for (const auto& [key, regions] : groups)
     writer.add_group(footprints, key.first, !key.second, regions);
   return writer.bytes(binary, footprints.regions.size());

@@ -48,7 +48,7 @@ void append_double(std::string& out, double value) {
 }
 
 std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> comments,
-                      std::span<const FaceAttribute> attributes) {
+                      std::span<const FaceAttribute> attributes, std::span<const FaceReal> reals) {
   std::size_t largest = 0;
   for (const auto& face : indexed.faces) largest = std::max(largest, face.size());
   // uchar counts are what most PLY readers expect; a face with more vertices
@@ -69,6 +69,7 @@ std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> 
   out += wide_count ? "property list uint int vertex_indices\n"
                     : "property list uchar int vertex_indices\n";
   for (const FaceAttribute& a : attributes) out += "property int " + a.name + "\n";
+  for (const FaceReal& r : reals) out += "property double " + r.name + "\n";
   out += "end_header\n";
 
   for (const Vec3& v : indexed.vertices) {
@@ -84,6 +85,7 @@ std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> 
       append_le(out, static_cast<std::uint8_t>(face.size()));
     for (const std::uint32_t v : face) append_le(out, index_as_int32(v));
     for (const FaceAttribute& a : attributes) append_le(out, a.values[i]);
+    for (const FaceReal& r : reals) append_le(out, r.values[i]);
   }
   return out;
 }

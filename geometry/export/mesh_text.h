@@ -18,12 +18,19 @@ struct FaceAttribute {
   std::vector<std::int32_t> values;
 };
 
+/// A floating-point face property, written as `property double`.
+struct FaceReal {
+  std::string name;
+  std::vector<double> values;
+};
+
 /// Binary little-endian PLY: `comment` lines, vertices as `double x, y, z`,
 /// faces as `vertex_indices` (uchar counts, uint where a face has more than
-/// 255 vertices) followed by the attributes in order. Throws
+/// 255 vertices) followed by the attributes in order, then the reals. Throws
 /// std::invalid_argument when an index does not fit a 32-bit int.
 std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> comments,
-                      std::span<const FaceAttribute> attributes);
+                      std::span<const FaceAttribute> attributes,
+                      std::span<const FaceReal> reals = {});
 
 /// OBJ: one comment line, `v x y z` and `f i j k ...` (1-based).
 std::string obj_text(const IndexedFaces& indexed, const std::string& comment);

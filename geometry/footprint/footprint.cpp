@@ -60,7 +60,44 @@ struct Context {
   const SceneIndex& index;
   const std::vector<LightSides>& sides;
   const std::vector<std::vector<PolygonSurface>>& surfaces;
+  /// Some casting model is tinted: regions split where τ changes.
+  bool tinted = false;
 };
+
+/// The shadows met on one receiver, as the partition's keys: key 0 lit,
+/// key k > 0 the k-th distinct list of models crossed (with their counts).
+struct ShadowKeys {
+  std::vector<std::vector<ModelCount>> lists;
+  int key_of(const std::vector<ModelCount>& counts) {
+    if (counts.empty()) return 0;
+    const auto it = std::find(lists.begin(), lists.end(), counts);
+    if (it != lists.end()) return static_cast<int>(it - lists.begin()) + 1;
+    lists.push_back(counts);
+    return static_cast<int>(lists.size());
+  }
+  /// The key of "no light arrives at all" (the light in the receiver's
+  /// plane), τ 0 whatever the models are.
+  int dark() {
+    if (dark_ == 0) {
+      lists.emplace_back();
+      dark_ = static_cast<int>(lists.size());
+    }
+    return dark_;
+  }
+  Rgb tau(const Scene& scene, int key) const {
+    if (key == 0) return {1, 1, 1};
+    if (key == dark_) return {0, 0, 0};
+    return transmittance_product(scene, lists[static_cast<std::size_t>(key - 1)]);
+  }
+
+ private:
+  int dark_ = 0;
+};
+
+/// The fraction of a light a region passes on, one number: the mean of
+/// τ's channels (1 lit, 0 behind an opaque polygon), exact for grey glass.
+/// What the CSV's sunlit fraction weighs shadowed areas by.
+double passed_fraction(const Rgb& tau) { return (tau.r + tau.g + tau.b) / 3; }
 
 PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_t model_index,
                            std::uint32_t polygon_index) {
@@ -72,6 +109,7 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
   FT lit_total = 0, shadowed_total = 0,
      front_lit = 0;  // 3D areas are these times sqrt(scale²): per unit
   double area = 0, lit_area = 0, shadowed_area = 0, front_lit_area = 0;
+  ShadowKeys keys;
   std::optional<std::int32_t> common_facing;
   std::vector<std::uint32_t> candidates, scratch;
   for (const ReceiverUnit& unit :
@@ -104,8 +142,10 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
     std::vector<Segment2> segments;
     Classifier classify;
     if (facing == 0) {
-      // The light in the receiver's plane: whole, and no light arrives.
-      classify = [](const Point2&) { return std::optional<bool>(true); };
+      // The light in the receiver's plane: whole, and no light arrives
+      // (τ 0: an empty list of models would read as lit).
+      const int dark = ctx.tinted ? keys.dark() : 1;
+      classify = [dark](const Point2&) { return std::optional<int>(dark); };
     } else {
       candidates.clear();
       ctx.sides[light].bvh.query_box(box3, 0.0, candidates);
@@ -123,9 +163,20 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
                                ctx.index.vertex(caster, t.local[1]),
                                ctx.index.vertex(caster, t.local[2]), segments);
       }
-      classify = [&](const Point2& p) {
-        return shadowed_from_light(ctx.index, plane.lift(p), lp, scratch);
-      };
+      if (ctx.tinted) {
+        classify = [&](const Point2& p) -> std::optional<int> {
+          const auto counts = shadowing_models_from_light(ctx.index, plane.lift(p), lp, scratch);
+          if (!counts) return std::nullopt;
+          return keys.key_of(*counts);
+        };
+      } else {
+        classify = [&](const Point2& p) -> std::optional<int> {
+          const std::optional<bool> shadowed =
+              shadowed_from_light(ctx.index, plane.lift(p), lp, scratch);
+          if (!shadowed) return std::nullopt;
+          return *shadowed ? 1 : 0;
+        };
+      }
     }
     result.segments += segments.size();
     PartitionCounts counts;
@@ -148,6 +199,7 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
 
     const FT scale2 = plane.area_scale_squared();
     FT unit_lit = 0, unit_shadowed = 0;
+    FT unit_passed = 0;  // shadowed areas times their passed_fraction (tinted scenes)
     for (const PartitionRegion& part : parts) {
       FootprintRegion r;
       r.light = light;
@@ -156,6 +208,11 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
       r.triangle = unit.triangle;
       r.cls = part.cls;
       r.facing = facing;
+      r.transmittance = part.cls == FootprintClass::lit ? Rgb{1, 1, 1}
+                        : ctx.tinted                    ? keys.tau(ctx.scene, part.key)
+                                                        : Rgb{0, 0, 0};
+      if (part.cls == FootprintClass::shadowed && ctx.tinted)
+        unit_passed += part.area * FT(passed_fraction(r.transmittance));
       for (const Point2& p : part.ring) {
         const Point3 q = plane.lift(p);
         r.vertices.push_back({nearest_double(q.x()), nearest_double(q.y()), nearest_double(q.z())});
@@ -173,6 +230,11 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
     lit_total += unit_lit;
     shadowed_total += unit_shadowed;
     if (facing > 0) front_lit += unit_lit;
+    if (facing > 0 && ctx.tinted) {
+      // Light through tinted polygons counts as far as it passes.
+      front_lit += unit_passed;
+      front_lit_area += nearest_sqrt(unit_passed * unit_passed * scale2);
+    }
   }
   result.summary.area = area;
   result.summary.lit_area = lit_area;
@@ -222,14 +284,6 @@ std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOpti
   if (options.lights.empty())
     for (std::uint32_t l = 0; l < scene.lights.size(); ++l) out.push_back(l);
   std::sort(out.begin(), out.end());
-  // Coloured shadows would split regions where τ changes (issue 22); drawn
-  // as if the tinted models were opaque they would be silently wrong.
-  for (std::size_t m = 0; m < scene.models.size(); ++m)
-    if (scene.models[m].casts_shadows && tinted(scene.models[m].transmittance))
-      throw std::invalid_argument(fmt::format(
-          "footprint: model {} ('{}') has a transmittance; footprints do not carry coloured "
-          "shadows yet (docs/transmittance.md)",
-          m, scene.models[m].name));
   for (std::uint32_t l : out) {
     if (scene.lights[l].type == LightType::area)
       throw std::invalid_argument(fmt::format(
@@ -281,7 +335,8 @@ Footprints compute_footprints(const Scene& input, const FootprintOptions& option
       for (std::uint32_t p = 0; p < scene.models[m].polygons.size(); ++p)
         items.push_back({l, m, p});
   std::vector<PolygonResult> results(items.size());
-  const Context ctx{scene, index, sides, surfaces};
+  const Context ctx{scene, index, sides, surfaces, has_transmittance(scene)};
+  out.transmittance = ctx.tinted;
   // Every item owns its exact objects (planes, arrangements, lazy numbers);
   // what they share (the scene, its index, the light sides) is doubles, so
   // the items run on any number of threads and the result is the same.

@@ -1,7 +1,8 @@
 #pragma once
 // Shadow footprints: for every unlimited light (point or directional) and
 // every polygon of every receiving model, the exact partition of the
-// polygon's surface into lit and shadowed regions (DESIGN.md "Shadow
+// polygon's surface into lit and shadowed regions (with tinted models also
+// split where the light passed, τ, changes) (DESIGN.md "Shadow
 // footprints"; docs/footprints.md). Plain value types: no CGAL crosses this
 // header.
 //
@@ -34,6 +35,10 @@ struct FootprintRegion {
   /// k - 1; -1 for a planar polygon, which is partitioned whole.
   std::int32_t triangle = -1;
   FootprintClass cls = FootprintClass::lit;
+  /// The light a region passes on per channel (docs/transmittance.md): 1
+  /// lit, 0 behind an opaque polygon, Π T through tinted ones. In a scene
+  /// with a tinted model the regions also split where τ changes.
+  Rgb transmittance{1, 1, 1};
   /// +1: the light is on the receiver's front side; -1 behind; 0 in its plane.
   std::int32_t facing = 0;
   std::vector<Vec3> vertices;
@@ -55,7 +60,9 @@ struct ReceiverSummary {
   /// face different ways, 0 ("mixed") and the sunlit fraction counts the
   /// lit area of its front-facing triangles.
   std::int32_t facing = 0;
-  /// Lit area of the parts whose front side faces the light, over the area.
+  /// Lit area of the parts whose front side faces the light, over the area;
+  /// in a scene with a tinted model, shadowed areas count too, times the
+  /// mean of their τ's channels (light through glass; docs/transmittance.md).
   double sunlit_fraction = 0;
 };
 
@@ -87,6 +94,9 @@ struct FootprintStats {
 
 struct Footprints {
   std::vector<FootprintRegion> regions;  ///< by light, model, polygon, triangle, then class
+  /// The scene has a tinted model: regions split where τ changes and the
+  /// files carry τ (FootprintRegion::transmittance).
+  bool transmittance = false;
   std::vector<ReceiverSummary> receivers;
   FootprintStats stats;
 };

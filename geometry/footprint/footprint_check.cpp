@@ -8,6 +8,7 @@
 #include <geometry/footprint/light_query.h>
 #include <geometry/footprint/receiver_units.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <geometry/oracle/transmittance.h>
 
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_set_2.h>
@@ -134,6 +135,13 @@ struct Checker {
   FootprintCheckReport& report;
   Failures& failures;
   std::vector<std::uint32_t> scratch;
+  /// The scene has a tinted model: each region's τ is checked too
+  /// (docs/transmittance.md), to the 1e-6 rule per channel.
+  bool tinted = false;
+
+  /// A region's τ against the models whose polygons shadow a point of it;
+  /// a failure line, or empty.
+  std::string tau_mismatch(const FootprintFace& face, const std::vector<ModelCount>& counts) const;
 
   /// The most a vertex's rounding can move it in the plane's 2D
   /// coordinates (or off the plane), for vertices of magnitude at most m:
@@ -244,6 +252,9 @@ void Checker::check_piece(const Key& key, const ReceiverUnit& unit,
       // The light in the receiver's plane: no light arrives (DESIGN.md).
       if (face.cls != 0)
         failures.add(fmt::format("{}: lit, but the light is in the receiver's plane", where));
+      else if (tinted && file.has_tau && (face.tau[0] != 0 || face.tau[1] != 0 || face.tau[2] != 0))
+        failures.add(
+            fmt::format("{}: passes light, but the light is in the receiver's plane", where));
       continue;
     }
     check_class(key, f, ring, plane, fan, light, 4 * delta_exact);
@@ -293,7 +304,22 @@ void Checker::check_class(const Key& key, std::size_t f, const std::vector<Point
     any_clear = true;
     if (!in_surface(fan, *p)) continue;  // outside the receiver: the area check reports it
     const Point3 x = plane.lift(*p);
-    const std::optional<bool> shadowed = shadowed_from_light(index, x, light, scratch);
+    std::optional<bool> shadowed;
+    if (tinted) {
+      const auto counts = shadowing_models_from_light(index, x, light, scratch);
+      if (!counts) continue;
+      shadowed = !counts->empty();
+      if (file.has_tau) {
+        if (const std::string why = tau_mismatch(face, *counts); !why.empty()) {
+          failures.add(fmt::format("region {} ({}): at its point ({:.17g}, {:.17g}, {:.17g}) {}", f,
+                                   receiver_name(scene, key), nearest_double(x.x()),
+                                   nearest_double(x.y()), nearest_double(x.z()), why));
+          return;
+        }
+      }
+    } else {
+      shadowed = shadowed_from_light(index, x, light, scratch);
+    }
     if (!shadowed) continue;
     if (*shadowed != (face.cls == 0)) {
       failures.add(fmt::format(
@@ -310,6 +336,19 @@ void Checker::check_class(const Key& key, std::size_t f, const std::vector<Point
     ++report.regions_too_thin;
   else if (decided == 0)
     ++report.regions_undecided;
+}
+
+std::string Checker::tau_mismatch(const FootprintFace& face,
+                                  const std::vector<ModelCount>& counts) const {
+  const Rgb t = transmittance_product(scene, counts);
+  const double exact[3] = {t.r, t.g, t.b};
+  for (std::size_t c = 0; c < 3; ++c)
+    if (!(std::abs(face.tau[c] - exact[c]) <= 1e-6))  // DESIGN.md's rule; NaN fails
+      return fmt::format(
+          "τ is ({:.9g}, {:.9g}, {:.9g}), but the oracle's is ({:.9g}, {:.9g}, "
+          "{:.9g})",
+          face.tau[0], face.tau[1], face.tau[2], t.r, t.g, t.b);
+  return {};
 }
 
 }  // namespace
@@ -373,7 +412,11 @@ FootprintCheckReport check_footprint(const Scene& input, const FootprintFile& fi
   }
   const Scene& scene = unlimited ? *unlimited : input;
   const SceneIndex index(scene);
-  Checker checker{scene, index, file, report, failures, {}};
+  Checker checker{scene, index, file, report, failures, {}, has_transmittance(scene)};
+  if (checker.tinted && !file.has_tau)
+    failures.add(
+        "the scene has a tinted model, but the file's faces have no tau_r, tau_g, tau_b: "
+        "coloured shadows cannot be checked");
   static const std::vector<std::size_t> kNone;
   for (const std::int64_t m : models) {
     const Model& model = scene.models[static_cast<std::size_t>(m)];

@@ -54,8 +54,14 @@ Hit cross_triangle(const SceneIndex& index, const IndexedPolygon& poly, const Fa
 
 }  // namespace
 
-std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x,
-                                        const HPoint& light, std::vector<std::uint32_t>& scratch) {
+namespace {
+
+/// The casting polygons near the segment from x to the light, and how the
+/// segment meets each: `visit(polygon, odd, touched)`; false from visit
+/// stops the walk.
+template <class Visit>
+void walk_casters(const SceneIndex& index, const Point3& x, const HPoint& light,
+                  std::vector<std::uint32_t>& scratch, Visit&& visit) {
   const Vec3 xd{CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
   scratch.clear();
   // The BVH pads its boxes by 1e-9 of the coordinates' size, far more than
@@ -64,7 +70,6 @@ std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x
   std::sort(scratch.begin(), scratch.end());
   const Point3 far =
       light.finite ? exact_point(light.v) : x + Epeck::Vector_3(light.v.x, light.v.y, light.v.z);
-  bool uncertain = false;
   for (const std::uint32_t id : scratch) {
     const IndexedPolygon& poly = index.polygons()[id];
     if (!poly.casts_shadows) continue;
@@ -77,14 +82,51 @@ std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x
       }
       if (h == Hit::cross) odd = !odd;
     }
+    if (!visit(id, odd, touched)) return;
+  }
+}
+
+}  // namespace
+
+std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x,
+                                        const HPoint& light, std::vector<std::uint32_t>& scratch) {
+  bool uncertain = false, shadowed = false;
+  walk_casters(index, x, light, scratch, [&](std::uint32_t, bool odd, bool touched) {
     if (touched) {
       uncertain = true;
-    } else if (odd) {
-      return true;  // robust: no small move of x undoes it
+      return true;
     }
-  }
+    if (odd) shadowed = true;  // robust: no small move of x undoes it
+    return !shadowed;
+  });
+  if (shadowed) return true;
   if (uncertain) return std::nullopt;
   return false;
+}
+
+std::optional<std::vector<ModelCount>> shadowing_models_from_light(
+    const SceneIndex& index, const Point3& x, const HPoint& light,
+    std::vector<std::uint32_t>& scratch) {
+  bool uncertain = false;
+  std::optional<std::uint32_t> opaque;
+  std::vector<std::uint32_t> odd_polygons;
+  walk_casters(index, x, light, scratch, [&](std::uint32_t id, bool odd, bool touched) {
+    if (touched) {
+      uncertain = true;
+      return true;
+    }
+    if (!odd) return true;
+    const std::uint32_t model = index.polygons()[id].model;
+    if (!tinted(index.scene().models[model].transmittance)) {
+      opaque = model;
+      return false;  // τ is 0 whatever else holds
+    }
+    odd_polygons.push_back(id);
+    return true;
+  });
+  if (opaque) return std::vector<ModelCount>{{*opaque, 1}};
+  if (uncertain) return std::nullopt;
+  return count_by_model(index, odd_polygons);
 }
 
 }  // namespace umbra::geometry::detail

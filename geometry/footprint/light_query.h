@@ -3,6 +3,7 @@
 // shadow, approached from the light (DESIGN.md "Shadow footprints")?
 #include <geometry/footprint/receiver_plane.h>
 #include <geometry/oracle/scene_index.h>
+#include <geometry/oracle/transmittance.h>
 
 #include <optional>
 #include <vector>
@@ -23,5 +24,14 @@ namespace umbra::geometry::detail {
 /// polygon shadows x robustly. `scratch` holds BVH candidates between calls.
 std::optional<bool> shadowed_from_light(const SceneIndex& index, const Point3& x,
                                         const HPoint& light, std::vector<std::uint32_t>& scratch);
+
+/// Coloured shadows (docs/transmittance.md): the casting polygons the same
+/// open segment crosses an odd number of times, counted by model in model
+/// order (an empty list: lit). nullopt when any casting polygon is touched,
+/// unless an opaque one is crossed robustly: then that opaque model alone
+/// (count 1), which makes τ 0 whatever else is touched.
+std::optional<std::vector<ModelCount>> shadowing_models_from_light(
+    const SceneIndex& index, const Point3& x, const HPoint& light,
+    std::vector<std::uint32_t>& scratch);
 
 }  // namespace umbra::geometry::detail

@@ -20,8 +20,9 @@ using Curve = Traits::Curve_2;
 using Face = Arrangement::Face_handle;
 using Halfedge = Arrangement::Halfedge_handle;
 
-// Face labels.
-constexpr int kUnknown = -1, kOutside = 0, kLit = 1, kShadowed = 2;
+// Face labels: outside the surface, or the Classifier's key plus one (so
+// kLit is key 0's; every label above it is a shadow).
+constexpr int kUnknown = -1, kOutside = 0, kLit = 1;
 
 /// Faces split by a cut inherit the label of the face they came from.
 /// It observes the base Arrangement_on_surface_2, the type the arrangement
@@ -115,8 +116,8 @@ void label_faces(Arrangement& arr, const ReceiverOutline& outline, const Classif
         label = kOutside;
         break;
       }
-      const std::optional<bool> shadowed = classify(p);
-      if (shadowed) label = *shadowed ? kShadowed : kLit;
+      const std::optional<int> key = classify(p);
+      if (key) label = *key + 1;
     }
     if (label == kUnknown)
       throw std::logic_error("partition_receiver: no point of a face could be classified");
@@ -269,7 +270,7 @@ void cut_holes(Arrangement& arr) {
     // disjoint, so one face's cuts do not move another's.
     std::vector<Curve> cuts;
     for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-      if (f->data() != kLit && f->data() != kShadowed) continue;
+      if (f->data() < kLit) continue;
       const std::vector<Halfedge> boundary = boundary_of(f);
       if (f->number_of_holes() > 0) {
         for (auto h = f->holes_begin(); h != f->holes_end(); ++h) {
@@ -325,7 +326,7 @@ std::vector<PartitionRegion> partition_receiver(const ReceiverOutline& outline,
 
   std::vector<PartitionRegion> regions;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (f->data() != kLit && f->data() != kShadowed) continue;
+    if (f->data() < kLit) continue;
     auto c = f->outer_ccb();
     const auto first = c;
     do {
@@ -336,6 +337,7 @@ std::vector<PartitionRegion> partition_receiver(const ReceiverOutline& outline,
     for (std::vector<Point2>& loop : loops_of(outer_ring(f))) {
       PartitionRegion region;
       region.cls = f->data() == kLit ? FootprintClass::lit : FootprintClass::shadowed;
+      region.key = f->data() - 1;
       region.area = twice_area(loop) / 2;
       if (!CGAL::is_positive(region.area))
         throw std::logic_error(

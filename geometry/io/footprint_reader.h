@@ -4,6 +4,7 @@
 // same layout, for `umbra validate --footprint`.
 #include <geometry/vec3.h>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string_view>
@@ -16,6 +17,8 @@ namespace umbra::geometry {
 struct FootprintFace {
   std::vector<Vec3> vertices;
   std::int64_t light = 0, model = 0, polygon = 0, triangle = -1, cls = 0, facing = 0;
+  /// tau_r, tau_g, tau_b where the file has them (FootprintFile::has_tau).
+  std::array<double, 3> tau{1, 1, 1};
 };
 
 struct FootprintFile {
@@ -23,6 +26,9 @@ struct FootprintFile {
   /// Some coordinate is stored as a float: the rounding of its vertices is
   /// a float's, not a double's.
   bool float_coordinates = false;
+  /// The faces carry the floating-point properties tau_r, tau_g and tau_b
+  /// (coloured shadows, docs/transmittance.md): all three or none.
+  bool has_tau = false;
 };
 
 /// The most vertices a footprint face may have. Regions are not split to
@@ -32,7 +38,8 @@ inline constexpr std::size_t kMaxFootprintFaceVertices = std::size_t{1} << 24;
 
 /// Reads a PLY footprint (any PLY encoding and scalar types): a `vertex`
 /// element with x, y, z and a `face` element with vertex_indices and the
-/// integer properties light, model, polygon, triangle, class and facing.
+/// integer properties light, model, polygon, triangle, class and facing,
+/// and optionally tau_r, tau_g and tau_b (any scalar type; all or none).
 /// Throws InputError naming the file (and line or byte) for a missing file,
 /// another extension than .ply, a malformed PLY, a missing property, an
 /// index out of range or a face of fewer than 3 vertices.

@@ -28,9 +28,12 @@ struct PlyFaceTable {
   PolygonSoup soup;
   std::vector<std::string> names;                  ///< the face properties, in header order
   std::vector<std::vector<std::int64_t>> columns;  ///< one value per face for each name
-  bool float_coordinates = false;                  ///< some of x, y, z is a float
+  /// The face's floating-point scalar properties, likewise.
+  std::vector<std::string> real_names;
+  std::vector<std::vector<double>> real_columns;
+  bool float_coordinates = false;  ///< some of x, y, z is a float
 };
-/// parse_ply, keeping the face element's integer properties, and reading
+/// parse_ply, keeping the face element's scalar properties, and reading
 /// faces of up to `max_polygon_vertices` vertices.
 PlyFaceTable parse_ply_face_table(std::string_view bytes, const std::string& name,
                                   std::size_t max_polygon_vertices);

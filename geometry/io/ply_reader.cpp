@@ -360,11 +360,14 @@ void check_counts(const Header& header, std::size_t body_size, const std::string
   }
 }
 
-/// What read_body keeps besides the soup: the face element's integer
-/// scalar properties, by column, when a caller asks for them.
+/// What read_body keeps besides the soup: the face element's scalar
+/// properties, integer and floating-point apart, by column, when a caller
+/// asks for them.
 struct FaceColumns {
   std::vector<std::string> names;
   std::vector<std::vector<std::int64_t>> values;
+  std::vector<std::string> real_names;
+  std::vector<std::vector<double>> real_values;
 };
 
 template <typename Source>
@@ -430,6 +433,10 @@ void read_body(Source& source, const Header& header, PolygonSoup& soup,
           const std::int64_t value = source.integer(property.type, "face property", context);
           for (std::size_t c = 0; c < columns->names.size(); ++c)
             if (columns->names[c] == property.name) columns->values[c].push_back(value);
+        } else if (is_face && columns) {
+          const double value = source.real(property.type, "face property", context);
+          for (std::size_t c = 0; c < columns->real_names.size(); ++c)
+            if (columns->real_names[c] == property.name) columns->real_values[c].push_back(value);
         } else {
           source.real(property.type, "value", context);
         }
@@ -499,13 +506,20 @@ PolygonSoup parse_ply_into(std::string_view bytes, const std::string& name,
   if (face) soup.polygons.reserve(face->count);
   if (columns && face) {
     for (const Property& property : face->properties) {
-      if (property.is_list || !is_integer(property.type)) continue;
+      if (property.is_list) continue;
       if (std::find(columns->names.begin(), columns->names.end(), property.name) !=
-          columns->names.end())
+              columns->names.end() ||
+          std::find(columns->real_names.begin(), columns->real_names.end(), property.name) !=
+              columns->real_names.end())
         throw util::InputError(at_line(name, face->line),
                                "face property " + property.name + " declared twice");
-      columns->names.push_back(property.name);
-      columns->values.emplace_back().reserve(face->count);
+      if (is_integer(property.type)) {
+        columns->names.push_back(property.name);
+        columns->values.emplace_back().reserve(face->count);
+      } else {
+        columns->real_names.push_back(property.name);
+        columns->real_values.emplace_back().reserve(face->count);
+      }
     }
   }
   if (float_coordinates && vertex) {
@@ -539,6 +553,8 @@ PlyFaceTable parse_ply_face_table(std::string_view bytes, const std::string& nam
       parse_ply_into(bytes, name, max_polygon_vertices, &columns, &table.float_coordinates);
   table.names = std::move(columns.names);
   table.columns = std::move(columns.values);
+  table.real_names = std::move(columns.real_names);
+  table.real_columns = std::move(columns.real_values);
   return table;
 }
 

@@ -4,6 +4,9 @@ checks that they agree: every region a polygon of 3+ vertices with valid
 class and facing; per (light, model, polygon), the regions' areas (Newell's
 formula on the file's doubles) add up to the CSV's area, the lit ones to
 its lit area; lit + shadowed = area; a receiver facing 0 has no lit region.
+With coloured shadows (tau_r/g/b on the faces): every τ in [0, 1], 1 on lit
+regions; and for a receiver facing the light the CSV's sunlit fraction is
+(lit area + Σ shadowed area · mean τ) / area (docs/transmittance.md).
 Usage: footprint_check.py OUT.ply OUT.csv   (exit 0 when all hold)
 """
 import csv
@@ -65,6 +68,8 @@ def main():
     vertices, faces = read_ply(sys.argv[1])
     rows = list(csv.DictReader(open(sys.argv[2], newline="")))
     sums = defaultdict(lambda: [0.0, 0.0, 0])
+    passed = defaultdict(float)  # shadowed area times mean τ, per receiver
+    tinted = bool(faces) and "tau_r" in faces[0]
     failures = []
     for i, f in enumerate(faces):
         idx = f["vertex_indices"]
@@ -80,6 +85,12 @@ def main():
             if f["facing"] == 0:
                 failures.append("face %d: lit with the light in its plane" % i)
         sums[key][2] += 1
+        if tinted:
+            tau = (f["tau_r"], f["tau_g"], f["tau_b"])
+            if not all(0 <= t <= 1 for t in tau) or (f["class"] == 1 and tau != (1, 1, 1)):
+                failures.append("face %d: tau %r for class %d" % (i, tau, f["class"]))
+            if f["class"] == 0:
+                passed[key] += a * sum(tau) / 3
     seen = set()
     for r in rows:
         key = (int(r["light"]), int(r["model"]), int(r["polygon"]))
@@ -94,6 +105,11 @@ def main():
             failures.append("%r: area %g but no region" % (key, a))
         if not 0 <= float(r["sunlit_fraction"]) <= 1:
             failures.append("%r: sunlit fraction %s" % (key, r["sunlit_fraction"]))
+        if int(r["facing"]) == 1 and a > 0:
+            expected = (lit + passed.get(key, 0.0)) / a
+            if abs(expected - float(r["sunlit_fraction"])) > 1e-9:
+                failures.append("%r: sunlit fraction %s, regions give %.17g" %
+                                (key, r["sunlit_fraction"], expected))
     for key in sums:
         if key not in seen:
             failures.append("%r: regions but no CSV row" % (key,))
