@@ -5,6 +5,8 @@ two_lights.gltf: a floor, a closed cube turned 30 degrees about y under a
 translated parent, a triangle-strip ramp, a point light with a range and a
 directional light, and a perspective camera tilted down; buffers embedded as
 base64 data URIs. two_lights.glb: the same scene as a GLB container.
+tinted.gltf: the same scene whose cube's material has KHR_materials_transmission
+(factor 0.5): a tinted cube, T = 0.5 x its base colour (docs/transmittance.md).
 """
 import base64
 import json
@@ -102,7 +104,20 @@ def build():
     return b
 
 
+def write_tinted():
+    b = build()
+    doc = dict(b.doc)
+    doc["materials"][1]["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 0.5}}
+    doc["extensionsUsed"] = ["KHR_lights_punctual", "KHR_materials_transmission"]
+    doc["buffers"] = [{"byteLength": len(b.bin),
+                       "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(b.bin)).decode()}]
+    with open(os.path.join(HERE, "tinted.gltf"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
 def main():
+    write_tinted()
     b = build()
     doc = dict(b.doc)
     doc["buffers"] = [{"byteLength": len(b.bin),
