@@ -82,6 +82,7 @@ TransmittanceAnswer transmittance_sample(const SceneIndex& index, const SampleRa
   }
   answer.shadow = {ShadowClass::shadowed, s.hard_boundary};
   const std::vector<ModelCount> counts = count_by_model(index, odd);
+  answer.polygons = odd;  // candidates come sorted, so these are too
   answer.tau = transmittance_product(scene, counts);
   if (opaque) {
     answer.boundary = s.hard_boundary;

@@ -36,6 +36,10 @@ struct TransmittanceAnswer {
   /// 1 is touched or the light lies in a tinted hit polygon's plane. A
   /// robustly crossed opaque polygon makes τ 0 whatever else is touched.
   bool boundary = false;
+  /// The casting polygons (indices into SceneIndex::polygons()) crossed an
+  /// odd number of times, in increasing order; empty when lit or out of
+  /// range. τ is the product of their models' T.
+  std::vector<std::uint32_t> polygons;
 };
 
 /// The same sample as classify_sample, with τ: every shadowing polygon is

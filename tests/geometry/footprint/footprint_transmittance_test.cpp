@@ -78,8 +78,8 @@ TEST(FootprintTransmittance, OverlappingPanesSplitWhereTauChanges) {
 }
 
 TEST(FootprintTransmittance, AnOpaquePaneStopsTheLightUnderTheGlass) {
-  const Footprints f = compute_footprints(
-      floor_with({square(1, -1, 1, kAmber), square(2, 0, 2, Rgb{0, 0, 0})}));
+  const Footprints f =
+      compute_footprints(floor_with({square(1, -1, 1, kAmber), square(2, 0, 2, Rgb{0, 0, 0})}));
   const auto shadows = floor_shadows(f);
   ASSERT_EQ(shadows.size(), 2u);
   EXPECT_DOUBLE_EQ(shadows.at({0, 0, 0}), 16);  // the opaque pane's whole shadow

@@ -85,6 +85,9 @@ TEST(Transmittance, AClosedTintedBoxIsCrossedTwice) {
   const TransmittanceAnswer under = at_floor(scene_with({box}), 0.5);
   EXPECT_FALSE(under.boundary);
   EXPECT_EQ(under.tau, (Rgb{0.5625, 0.25, 0.0625}));
+  // The oddly crossed polygons: the box's bottom (kMinusY, 4) and top
+  // (kPlusY, 5), after the floor's one polygon.
+  EXPECT_EQ(under.polygons, (std::vector<std::uint32_t>{5, 6}));
 }
 
 TEST(Transmittance, AnOpaquePolygonStopsTheLightWhateverIsTouched) {
