@@ -319,6 +319,8 @@ int run_render(const RenderArgs& args) {
     run.width = frame.width;
     run.height = frame.height;
     run.lights = scene.lights.size();
+    for (std::size_t l = 0; l < scene.lights.size(); ++l)
+      if (scene.lights[l].sun) run.suns.emplace_back(l, *scene.lights[l].sun);
     run.models = scene.models.size();
     if (options.method == raster::Method::ray) run.ray_epsilon = options.ray.epsilon;
     if (options.method == raster::Method::map) run.map = options.map;

@@ -15,10 +15,22 @@ geometry::Scene load_verb_scene(const std::filesystem::path& file,
                "umbra: warning: {}: the scene has no lights; only ambient light, no shadow "
                "anywhere\n",
                file.string());
+  // A sun below the horizon is no error (a day's series has nights), but
+  // its light reaches nothing: said once, as a note.
+  for (std::size_t l = 0; l < scene.lights.size(); ++l)
+    if (scene.lights[l].sun && scene.lights[l].sun->below_horizon)
+      fmt::print(stderr,
+                 "umbra: note: {}: lights[{}] is the sun at {}, below the horizon (zenith "
+                 "{:.4f} degrees): it gives no light\n",
+                 file.string(), l, scene.lights[l].sun->time, scene.lights[l].sun->zenith_deg);
   return scene;
 }
 
 std::string describe_light(const geometry::Light& light) {
+  if (light.sun)
+    return fmt::format("sun at {}: zenith {:.4f}, azimuth {:.4f} degrees{}", light.sun->time,
+                       light.sun->zenith_deg, light.sun->azimuth_deg,
+                       light.sun->below_horizon ? " (below the horizon: no light)" : "");
   if (light.type == geometry::LightType::area)
     return fmt::format("area light of {} vertices", light.vertices.size());
   if (light.type == geometry::LightType::directional)

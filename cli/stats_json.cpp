@@ -19,6 +19,15 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
   j["height"] = run.height;
   j["lights"] = run.lights;
   j["models"] = run.models;
+  if (!run.suns.empty()) {
+    j["sun"] = nlohmann::ordered_json::array();
+    for (const auto& [light, sun] : run.suns)
+      j["sun"].push_back({{"light", light},
+                          {"time", sun.time},
+                          {"azimuth_deg", sun.azimuth_deg},
+                          {"zenith_deg", sun.zenith_deg},
+                          {"below_horizon", sun.below_horizon}});
+  }
   j["seconds"] = {
       {"load", timings.load},           {"volumes", stats.seconds_volumes},
       {"raster", stats.seconds_raster}, {"raster_prepare", stats.seconds_raster_prepare},

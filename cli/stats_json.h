@@ -32,6 +32,9 @@ struct RenderRun {
   int height = 0;
   std::size_t lights = 0;
   std::size_t models = 0;
+  /// The scene's sun lights (index, where SPA put the sun): "sun" in the
+  /// JSON, one entry each with azimuth_deg and zenith_deg (docs/sun.md).
+  std::vector<std::pair<std::size_t, geometry::SunInfo>> suns;
   /// --method ray: RayOptions::epsilon as used (the default when not given).
   std::optional<double> ray_epsilon;
   /// The shadow-map settings, written for --method map only.

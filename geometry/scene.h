@@ -37,6 +37,28 @@ struct Camera {
 /// DESIGN.md "Area lights", docs/soft-shadows.md).
 enum class LightType { point, directional, area };
 
+/// Where the scene stands on Earth (DESIGN.md "Site and sun", docs/sun.md):
+/// for lights of type "sun".
+struct Site {
+  double latitude_deg = 0;   ///< north positive
+  double longitude_deg = 0;  ///< east positive
+  double elevation_m = 0;
+  double pressure_mbar = 1010;  ///< for refraction
+  double temperature_c = 10;
+  Vec3 up{0, 1, 0};      ///< the world axis pointing up (to the zenith)
+  Vec3 north{0, 0, -1};  ///< the world axis pointing north, perpendicular to up
+  Vec3 origin{0, 0, 0};  ///< the world point at the latitude and longitude
+};
+
+/// A sun light as the scene gave it, and where SPA put the sun.
+struct SunInfo {
+  std::string time;  ///< the ISO 8601 text
+  double zenith_deg = 0, azimuth_deg = 0;
+  /// The sun's centre below the horizon (elevation < 0 after refraction):
+  /// it gives no light (Light::dark).
+  bool below_horizon = false;
+};
+
 /// Bergeron's light: full intensity up to dec_begin, then
 /// ((light_end - d) / (light_end - dec_begin))^decrease, zero from light_end on.
 /// A light without light_end is unlimited and never falls off.
@@ -55,6 +77,13 @@ struct Light {
   double dec_begin = 0;
   std::optional<double> light_end;
   int decrease = 1;
+  /// A sun light (`"type": "sun"`): a directional light whose direction
+  /// is the sun's there and then; the rest of the struct as for any
+  /// directional light.
+  std::optional<SunInfo> sun;
+  /// Gives no light at all (a sun below the horizon): every sample is out
+  /// of range for it, it casts no volume and no footprint.
+  bool dark = false;
 };
 
 /// One polygon: indices into its model's vertex list, in the file's order.
@@ -86,6 +115,7 @@ struct Scene {
   /// need no eye; rendering and validating do).
   bool has_camera = true;
   Rgb ambient{0.08, 0.08, 0.08};
+  std::optional<Site> site;  ///< needed by sun lights
   std::vector<Light> lights;
   std::vector<Model> models;
   std::filesystem::path source;  ///< the file it was read from (for messages)

@@ -118,6 +118,7 @@ std::pair<int, int> index_range(double a, double b, int n) {
 //    ill-conditioned camera frame, a non-finite value) gives the whole image.
 PixelRect light_window(const geometry::CameraFrame& c, const geometry::Light& light) {
   const PixelRect whole{0, 0, c.width, c.height};
+  if (light.dark) return {};  // a sun below the horizon: no pixel in its reach
   if (light.type != geometry::LightType::point || !light.light_end) return whole;
   const double a_h = c.a * c.h;
   if (!(c.h > 0) || !(a_h > 0) || !std::isfinite(c.h) || !std::isfinite(a_h)) return whole;

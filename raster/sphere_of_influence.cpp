@@ -40,6 +40,7 @@ InSphere coverage(std::span<const geometry::Vec3> vertices, const geometry::Vec3
 
 bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
                   const geometry::HitTriangle& tri) {
+  if (light.dark) return true;  // a sun below the horizon reaches nothing
   if (light.type != geometry::LightType::point || !light.light_end) return false;
   return geometry::compare_hit_distance(ray.origin, ray.direction, tri.a, tri.b, tri.c,
                                         light.position,
@@ -87,6 +88,7 @@ InSphere SphereTable::classify(std::uint32_t surface, std::uint32_t light) const
 bool SphereTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
                                const geometry::SampleRay& ray,
                                const geometry::HitTriangle& tri) const {
+  if (light.dark) return true;  // a sun below the horizon reaches nothing
   if (light.type != geometry::LightType::point || !light.light_end) return false;  // no reach
   const InSphere r = at(surface, l);
   return r == InSphere::outside || (r == InSphere::cut && raster::out_of_range(light, ray, tri));

@@ -284,6 +284,9 @@ std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOpti
   if (options.lights.empty())
     for (std::uint32_t l = 0; l < scene.lights.size(); ++l) out.push_back(l);
   std::sort(out.begin(), out.end());
+  // A dark light (a sun below the horizon) lights nothing: no footprint
+  // (the CLI notes it when the scene loads).
+  std::erase_if(out, [&](std::uint32_t l) { return scene.lights[l].dark; });
   for (std::uint32_t l : out) {
     if (scene.lights[l].type == LightType::area)
       throw std::invalid_argument(fmt::format(

@@ -10,6 +10,7 @@
 #include <geometry/io/json_fields.h>
 #include <geometry/io/mesh_io.h>
 #include <geometry/io/scene_json.h>
+#include <geometry/io/scene_sun.h>
 #include <geometry/io/transform.h>
 #include <geometry/oracle/visible_fraction.h>
 #include <geometry/sample_ray.h>
@@ -99,10 +100,12 @@ std::vector<Vec3> read_area_light_vertices(const Fields& in, Element v, const st
   return vertices;
 }
 
-Light read_light(const Fields& in, Element v, const std::string& path) {
+Light read_light(const Fields& in, Element v, const std::string& path,
+                 const std::optional<Site>& site) {
   in.expect_object(v, path);
   Light light;
   const std::string type = in.string(in.required(v, "type", path), child(path, "type"));
+  if (type == "sun") return json::read_sun_light(in, v, path, site);
   if (type == "point") {
     light.type = LightType::point;
     in.check_keys(v, path, {"type", "position", "intensity", "dec_begin", "light_end", "decrease"});
@@ -120,7 +123,7 @@ Light read_light(const Fields& in, Element v, const std::string& path) {
         read_area_light_vertices(in, in.required(v, "vertices", path), child(path, "vertices"));
   } else {
     in.fail(child(path, "type"),
-            "unknown light type '" + type + "'; expected point, directional or area");
+            "unknown light type '" + type + "'; expected point, directional, area or sun");
   }
   if (const std::optional<Element> intensity = Fields::find(v, "intensity"))
     light.intensity = in.rgb(*intensity, child(path, "intensity"));
@@ -315,7 +318,7 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
   const Element root = document.root();
   const Fields in(file);
   if (!root.is_object()) in.fail("", "a scene must be a JSON object");
-  in.check_keys(root, "", {"camera", "ambient", "lights", "models"});
+  in.check_keys(root, "", {"camera", "ambient", "site", "lights", "models"});
 
   Scene scene;
   scene.source = file;
@@ -325,10 +328,12 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
     scene.has_camera = false;
   if (const std::optional<Element> ambient = Fields::find(root, "ambient"))
     scene.ambient = in.rgb(*ambient, "ambient");
+  if (const std::optional<Element> site = Fields::find(root, "site"))
+    scene.site = json::read_site(in, *site, "site");
   if (const std::optional<Element> lights = Fields::find(root, "lights")) {
     std::size_t i = 0;
     for (const Element light : in.array(*lights, "lights"))
-      scene.lights.push_back(read_light(in, light, item("lights", i++)));
+      scene.lights.push_back(read_light(in, light, item("lights", i++), scene.site));
   }
   const Array models = in.array(in.required(root, "models", ""), "models");
   if (models.begin() == models.end()) in.fail("models", "a scene needs at least one model");

@@ -24,6 +24,10 @@ SampleSegment sample_segment(const SceneIndex& index, const SampleRay& ray, cons
                   .light = light_point(light),
                   .candidates = {}};
   s.hard_boundary = hit.boundary;
+  if (light.dark) {  // a sun below the horizon: no light reaches anything
+    s.out_of_range = true;
+    return s;
+  }
   if (light.type == LightType::point && light.light_end) {
     const Sign range = compare_hit_distance(ray.origin, ray.direction, h.a, h.b, h.c,
                                             light.position, *light.light_end);

@@ -295,9 +295,10 @@ LightVolume build_light_volume(const SceneShare& share, std::uint32_t li,
   const auto start = std::chrono::steady_clock::now();
   const Scene& scene = share.scene;
   const Light& light = scene.lights[li];
-  if (light.type == LightType::area) {
+  if (light.type == LightType::area || light.dark) {
     // An area light has no hard shadow volume: its soft shadow is a
-    // visible fraction (geometry/oracle/visible_fraction.h).
+    // visible fraction (geometry/oracle/visible_fraction.h). A dark light
+    // (a sun below the horizon) lights nothing, so it shadows nothing.
     LightVolume none;
     none.stats.light = li;
     none.extrusion.assign(scene.models.size(), 0.0);

@@ -111,7 +111,8 @@ EyeStart eye_start(const SceneIndex& index, const ShadowVolumes& volumes, unsign
   // only its own count, flag, planes and groups (a group belongs to one light).
   util::parallel_for(lights, threads, [&](std::size_t li) {
     const auto l = static_cast<std::uint32_t>(li);
-    if (scene.lights[l].type == LightType::area) return;  // no volume: count 0, never degenerate
+    // No volume (an area light, a dark sun): count 0, never degenerate.
+    if (scene.lights[l].type == LightType::area || scene.lights[l].dark) return;
     const HPoint lp = light_point(scene.lights[l]);
     auto odd = shadowing_polygons(index, eye, l);
     if (!odd) {

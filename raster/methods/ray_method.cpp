@@ -57,6 +57,7 @@ glm::vec3 to_float(const geometry::Vec3& v) {
 /// A light in float, as the shadow rays see it.
 struct FloatLight {
   bool directional = false;
+  bool dark = false;         ///< a sun below the horizon: reaches nothing
   glm::vec3 position{0.0f};  ///< point lights
   glm::vec3 toward{0.0f};    ///< directional: unit vector against the light's direction
   double light_end = std::numeric_limits<double>::infinity();
@@ -67,6 +68,7 @@ std::vector<FloatLight> float_lights(const geometry::Scene& scene) {
   for (const geometry::Light& l : scene.lights) {
     FloatLight f;
     f.directional = l.type == geometry::LightType::directional;
+    f.dark = l.dark;
     f.position = to_float(l.position);  // an area light's is unused: AreaSurface samples it
     if (f.directional) f.toward = -glm::normalize(to_float(l.direction));
     if (l.type == geometry::LightType::point && l.light_end) f.light_end = *l.light_end;
@@ -88,6 +90,7 @@ enum class Reach {
 /// usual self-intersection epsilon; it ends `offset` before a point light.
 Reach shadow_ray(const FloatLight& light, const glm::vec3& h, const glm::vec3& ng,
                  const glm::vec3& to_eye, bool casts, float offset, RTCRay& ray) {
+  if (light.dark) return Reach::out_of_range;
   glm::vec3 dir = light.toward;
   float far = kInfinity;
   if (!light.directional) {

@@ -301,9 +301,10 @@ TEST(SceneIo, MeshErrorNamesFieldAndMeshLine) {
 }
 
 TEST(SceneIo, UnknownLightType) {
-  EXPECT_EQ(
-      scene_error(scene(R"([{"type": "spot", "position": [0, 0, 0]}])")),
-      kFile + ": lights[0].type: unknown light type 'spot'; expected point, directional or area");
+  EXPECT_EQ(scene_error(scene(R"([{"type": "spot", "position": [0, 0, 0]}])")),
+            kFile +
+                ": lights[0].type: unknown light type 'spot'; expected point, directional, area "
+                "or sun");
   EXPECT_EQ(scene_error(scene(R"([{"position": [0, 0, 0]}])")),
             kFile + ": lights[0].type: missing required field 'type'");
 }
