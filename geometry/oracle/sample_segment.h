@@ -21,7 +21,8 @@ struct SampleSegment {
   /// The light lies in the plane of the shadow-casting hit polygon.
   bool light_in_hit_plane = false;
   /// Polygons whose box may meet the segment from (about) H to the light,
-  /// in increasing order; empty when out of range.
+  /// in no particular order (classify_sample's answer does not depend on
+  /// it); empty when out of range.
   std::vector<std::uint32_t> candidates;
 };
 

@@ -48,7 +48,6 @@ SampleSegment sample_segment(const SceneIndex& index, const SampleRay& ray, cons
   const Vec3 approx_h = ray.origin + t * ray.direction;
   const double slack = 1e-12 * (index.magnitude() + std::abs(t) * length(ray.direction)) + 1e-300;
   index.query_segment(approx_h, s.light.v, !s.light.finite, slack, s.candidates);
-  std::sort(s.candidates.begin(), s.candidates.end());
   return s;
 }
 

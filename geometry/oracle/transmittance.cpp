@@ -1,6 +1,7 @@
 #include <geometry/oracle/sample_segment.h>
 #include <geometry/oracle/transmittance.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -81,8 +82,12 @@ TransmittanceAnswer transmittance_sample(const SceneIndex& index, const SampleRa
     return answer;
   }
   answer.shadow = {ShadowClass::shadowed, s.hard_boundary};
+  // The few oddly crossed polygons sorted here, not every candidate on
+  // classify_sample's path: model order for the product, increasing order
+  // for the answer.
+  std::sort(odd.begin(), odd.end());
   const std::vector<ModelCount> counts = count_by_model(index, odd);
-  answer.polygons = odd;  // candidates come sorted, so these are too
+  answer.polygons = odd;
   answer.tau = transmittance_product(scene, counts);
   if (opaque) {
     answer.boundary = s.hard_boundary;

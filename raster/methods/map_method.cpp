@@ -299,7 +299,10 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
       const std::uint32_t own_id = ids ? surface_id(index, s.polygon, mo.id_granularity) : 0;
       for (std::uint32_t l = 0; l < lights; ++l) {
         ShadowClass& c = sample.classes[l];
-        sample.tau[l] = {0, 0, 0};  // read only where shadowed in a tinted frame
+        // τ is read only where shadowed in a tinted frame, and written
+        // only by the transparency buffer below (0 otherwise, from the
+        // sample's construction).
+        if (transparency) sample.tau[l] = {0, 0, 0};
         if (frame.is_soft(l)) {
           // An area light: PCSS's estimate of V (1 where nothing was looked up).
           double v = 1;
