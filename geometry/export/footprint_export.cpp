@@ -1,6 +1,7 @@
 // Footprints to PLY, OBJ (+ MTL) and CSV (docs/footprints.md). PLY bytes and
 // OBJ numbers come from mesh_text.h for the reason given in
 // volume_export.cpp: double positions that read back bit-identical.
+#include <geometry/export/csv_text.h>
 #include <geometry/export/footprint_export.h>
 #include <geometry/export/footprint_gltf.h>
 #include <geometry/export/indexed_faces.h>
@@ -121,17 +122,6 @@ std::string mtl_text(const Footprints& f) {
     out += "Ka 0 0 0\nKs 0 0 0\nd 1\nillum 1\n";
   }
   return out;
-}
-
-/// A CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
 }
 
 }  // namespace

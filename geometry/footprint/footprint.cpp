@@ -1,5 +1,6 @@
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/footprint/footprint.h>
+#include <geometry/footprint/footprint_tables.h>
 #include <geometry/footprint/light_query.h>
 #include <geometry/footprint/receiver_partition.h>
 #include <geometry/footprint/receiver_plane.h>
@@ -21,14 +22,7 @@ namespace {
 
 using namespace detail;
 
-/// One light's side polygons as the edges they come from, with boxes that
-/// hold each side's part inside the scene (its vertices reach past it).
-struct LightSides {
-  std::vector<std::array<Vec3, 2>> edges;
-  Bvh bvh;
-};
-
-LightSides light_sides(const Scene& scene, const ShadowVolumes& volumes, std::uint32_t light) {
+LightSides sides_of(const Scene& scene, const ShadowVolumes& volumes, std::uint32_t light) {
   LightSides sides;
   std::vector<Box> boxes;
   for (const ShadowPolygon& p : volumes.polygons) {
@@ -59,7 +53,7 @@ struct Context {
   const Scene& scene;
   const SceneIndex& index;
   const std::vector<LightSides>& sides;
-  const std::vector<std::vector<PolygonSurface>>& surfaces;
+  const std::vector<ModelTables>& tables;
   /// Some casting model is tinted: regions split where τ changes.
   bool tinted = false;
 };
@@ -113,31 +107,16 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
   std::optional<std::int32_t> common_facing;
   std::vector<std::uint32_t> candidates, scratch;
   for (const ReceiverUnit& unit :
-       receiver_units(model, polygon, ctx.surfaces[model_index][polygon_index])) {
+       receiver_units(model, polygon, ctx.tables[model_index].surfaces[polygon_index])) {
     ++result.units;
-    const ReceiverPlane plane = receiver_unit_plane(unit);
+    const UnitFrame frame = unit_frame(unit);
+    const ReceiverPlane& plane = frame.plane;
     // +1: the light on the side the receiver's normal points to, its front.
     const std::int32_t facing = static_cast<std::int32_t>(plane.side(lp));
     if (!common_facing)
       common_facing = facing;
     else if (*common_facing != facing)
       common_facing = 0;
-
-    ReceiverOutline outline;
-    Box box3;
-    for (const Vec3& v : unit.vertices) {
-      outline.vertices.push_back(plane.project(v));
-      box3.extend(v);
-    }
-    outline.fan = unit.fan;
-    Box2 box2{outline.vertices[0].x(), outline.vertices[0].x(), outline.vertices[0].y(),
-              outline.vertices[0].y()};
-    for (const Point2& p : outline.vertices) {
-      box2.u_lo = CGAL::min(box2.u_lo, p.x());
-      box2.u_hi = CGAL::max(box2.u_hi, p.x());
-      box2.v_lo = CGAL::min(box2.v_lo, p.y());
-      box2.v_hi = CGAL::max(box2.v_hi, p.y());
-    }
 
     std::vector<Segment2> segments;
     Classifier classify;
@@ -147,22 +126,8 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
       const int dark = ctx.tinted ? keys.dark() : 1;
       classify = [dark](const Point2&) { return std::optional<int>(dark); };
     } else {
-      candidates.clear();
-      ctx.sides[light].bvh.query_box(box3, 0.0, candidates);
-      for (std::uint32_t s : candidates) {
-        const auto& e = ctx.sides[light].edges[s];
-        add_side_segment(plane, box2, e[0], e[1], lp, segments);
-      }
-      candidates.clear();
-      ctx.index.query_box(box3, 0.0, candidates);
-      for (std::uint32_t id : candidates) {
-        const IndexedPolygon& caster = ctx.index.polygons()[id];
-        if (!caster.casts_shadows) continue;
-        for (const FanTriangle& t : caster.surface->triangles)
-          add_piercing_segment(plane, ctx.index.vertex(caster, t.local[0]),
-                               ctx.index.vertex(caster, t.local[1]),
-                               ctx.index.vertex(caster, t.local[2]), segments);
-      }
+      add_light_segments(frame, ctx.sides[light], lp, segments, candidates);
+      add_piercing_segments(frame, ctx.index, segments, candidates);
       if (ctx.tinted) {
         classify = [&](const Point2& p) -> std::optional<int> {
           const auto counts = shadowing_models_from_light(ctx.index, plane.lift(p), lp, scratch);
@@ -180,21 +145,9 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
     }
     result.segments += segments.size();
     PartitionCounts counts;
-    std::vector<PartitionRegion> parts = partition_receiver(outline, segments, classify, counts);
-    // A canonical order, whatever order the arrangement's faces came in:
-    // each ring from its lexicographically smallest vertex, shadowed
-    // regions first, then by that vertex.
-    for (PartitionRegion& part : parts)
-      std::rotate(part.ring.begin(), std::min_element(part.ring.begin(), part.ring.end()),
-                  part.ring.end());
-    std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
-      if (a.cls != b.cls) return a.cls < b.cls;
-      // Pieces of one class can share their smallest vertex (two sides of a
-      // cut): the whole rings then decide, so no order of the
-      // arrangement's faces shows through.
-      return std::lexicographical_compare(a.ring.begin(), a.ring.end(), b.ring.begin(),
-                                          b.ring.end());
-    });
+    std::vector<PartitionRegion> parts =
+        partition_receiver(frame.outline, segments, classify, counts);
+    canonical_order(parts);
     result.faces += counts.classified_faces;
 
     const FT scale2 = plane.area_scale_squared();
@@ -213,10 +166,7 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
                                                         : Rgb{0, 0, 0};
       if (part.cls == FootprintClass::shadowed && ctx.tinted)
         unit_passed += part.area * FT(passed_fraction(r.transmittance));
-      for (const Point2& p : part.ring) {
-        const Point3 q = plane.lift(p);
-        r.vertices.push_back({nearest_double(q.x()), nearest_double(q.y()), nearest_double(q.z())});
-      }
+      r.vertices = rounded_ring(plane, part.ring);
       r.area = nearest_sqrt(part.area * part.area * scale2);
       (part.cls == FootprintClass::lit ? unit_lit : unit_shadowed) += part.area;
       result.regions.push_back(std::move(r));
@@ -248,28 +198,6 @@ PolygonResult footprint_of(const Context& ctx, std::uint32_t light, std::uint32_
     result.summary.sunlit_fraction = area > 0 ? front_lit_area / area : 0.0;
   }
   return result;
-}
-
-std::vector<std::uint32_t> receiving_models(const Scene& scene, const FootprintOptions& options) {
-  std::vector<std::uint32_t> out;
-  if (options.receivers.empty()) {
-    for (std::uint32_t m = 0; m < scene.models.size(); ++m)
-      if (scene.models[m].receives) out.push_back(m);
-    if (out.empty())
-      throw std::invalid_argument("footprint: no model receives (every model has receives: false)");
-    return out;
-  }
-  for (const std::string& name : options.receivers) {
-    bool found = false;
-    for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
-      if (scene.models[m].name != name) continue;
-      found = true;
-      if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
-    }
-    if (!found) throw std::invalid_argument(fmt::format("--receivers: no model named '{}'", name));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
 }
 
 std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOptions& options) {
@@ -304,28 +232,127 @@ std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOpti
 
 }  // namespace
 
-Footprints compute_footprints(const Scene& input, const FootprintOptions& options) {
-  const std::vector<std::uint32_t> lights = chosen_lights(input, options);
-  const std::vector<std::uint32_t> models = receiving_models(input, options);
-  // With ignore_light_end, the same scene with every light unlimited.
-  std::optional<Scene> unlimited;
-  if (options.ignore_light_end) {
-    unlimited = input;
-    for (Light& l : unlimited->lights) l.light_end.reset();
-  }
-  const Scene& scene = unlimited ? *unlimited : input;
+namespace detail {
 
-  Footprints out;
-  auto start = util::Clock::now();
+std::vector<std::uint32_t> receiving_models(const Scene& scene, const FootprintOptions& options) {
+  std::vector<std::uint32_t> out;
+  if (options.receivers.empty()) {
+    for (std::uint32_t m = 0; m < scene.models.size(); ++m)
+      if (scene.models[m].receives) out.push_back(m);
+    if (out.empty())
+      throw std::invalid_argument("footprint: no model receives (every model has receives: false)");
+    return out;
+  }
+  for (const std::string& name : options.receivers) {
+    bool found = false;
+    for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
+      if (scene.models[m].name != name) continue;
+      found = true;
+      if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+    }
+    if (!found) throw std::invalid_argument(fmt::format("--receivers: no model named '{}'", name));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+UnitFrame unit_frame(const ReceiverUnit& unit) {
+  UnitFrame f{receiver_unit_plane(unit), {}, {}, {}};
+  for (const Vec3& v : unit.vertices) {
+    f.outline.vertices.push_back(f.plane.project(v));
+    f.box3.extend(v);
+  }
+  f.outline.fan = unit.fan;
+  const Point2& p0 = f.outline.vertices[0];
+  f.box2 = Box2{p0.x(), p0.x(), p0.y(), p0.y()};
+  for (const Point2& p : f.outline.vertices) {
+    f.box2.u_lo = CGAL::min(f.box2.u_lo, p.x());
+    f.box2.u_hi = CGAL::max(f.box2.u_hi, p.x());
+    f.box2.v_lo = CGAL::min(f.box2.v_lo, p.y());
+    f.box2.v_hi = CGAL::max(f.box2.v_hi, p.y());
+  }
+  return f;
+}
+
+void add_light_segments(const UnitFrame& frame, const LightSides& sides, const HPoint& light,
+                        std::vector<Segment2>& segments, std::vector<std::uint32_t>& scratch) {
+  scratch.clear();
+  sides.bvh.query_box(frame.box3, 0.0, scratch);
+  for (std::uint32_t s : scratch) {
+    const auto& e = sides.edges[s];
+    add_side_segment(frame.plane, frame.box2, e[0], e[1], light, segments);
+  }
+}
+
+void add_piercing_segments(const UnitFrame& frame, const SceneIndex& index,
+                           std::vector<Segment2>& segments, std::vector<std::uint32_t>& scratch) {
+  scratch.clear();
+  index.query_box(frame.box3, 0.0, scratch);
+  for (std::uint32_t id : scratch) {
+    const IndexedPolygon& caster = index.polygons()[id];
+    if (!caster.casts_shadows) continue;
+    for (const FanTriangle& t : caster.surface->triangles)
+      add_piercing_segment(frame.plane, index.vertex(caster, t.local[0]),
+                           index.vertex(caster, t.local[1]), index.vertex(caster, t.local[2]),
+                           segments);
+  }
+}
+
+void canonical_order(std::vector<PartitionRegion>& parts) {
+  // Whatever order the arrangement's faces came in: each ring from its
+  // lexicographically smallest vertex, shadowed regions first, then by
+  // that vertex.
+  for (PartitionRegion& part : parts)
+    std::rotate(part.ring.begin(), std::min_element(part.ring.begin(), part.ring.end()),
+                part.ring.end());
+  std::sort(parts.begin(), parts.end(), [](const auto& a, const auto& b) {
+    if (a.cls != b.cls) return a.cls < b.cls;
+    // Pieces of one class can share their smallest vertex (two sides of a
+    // cut): the whole rings then decide, so no order of the arrangement's
+    // faces shows through.
+    return std::lexicographical_compare(a.ring.begin(), a.ring.end(), b.ring.begin(), b.ring.end());
+  });
+}
+
+std::vector<Vec3> rounded_ring(const ReceiverPlane& plane, const std::vector<Point2>& ring) {
+  std::vector<Vec3> out;
+  out.reserve(ring.size());
+  for (const Point2& p : ring) {
+    const Point3 q = plane.lift(p);
+    out.push_back({nearest_double(q.x()), nearest_double(q.y()), nearest_double(q.z())});
+  }
+  return out;
+}
+
+FootprintTables::FootprintTables(const Scene& input, std::vector<std::uint32_t> receiving,
+                                 bool ignore_light_end, unsigned thread_count)
+    : scene(input), receivers(std::move(receiving)), threads(thread_count) {
+  if (ignore_light_end)
+    for (Light& l : scene.lights) l.light_end.reset();
+  // Every model's: the casters' for their volumes, the receivers' surfaces.
+  tables = model_tables(scene, threads);
+  std::vector<const std::vector<PolygonSurface>*> surfaces(tables.size());
+  for (std::size_t m = 0; m < tables.size(); ++m) surfaces[m] = &tables[m].surfaces;
+  index = std::make_unique<SceneIndex>(scene, surfaces);
+  tinted = has_transmittance(scene);
+}
+
+std::vector<LightSides> light_sides(const FootprintTables& t,
+                                    std::span<const std::uint32_t> lights) {
   VolumeOptions vo;
   vo.caps = false;
-  vo.threads = options.threads;
-  const ShadowVolumes volumes = build_shadow_volumes(scene, vo);
-  std::vector<LightSides> sides(scene.lights.size());
-  for (std::uint32_t l : lights) sides[l] = light_sides(scene, volumes, l);
-  const SceneIndex index(scene);
-  std::vector<std::vector<PolygonSurface>> surfaces(scene.models.size());
-  for (std::uint32_t m : models) surfaces[m] = model_surfaces(scene.models[m]);
+  vo.threads = t.threads;
+  const ShadowVolumes volumes = build_shadow_volumes(t.scene, t.tables, vo);
+  std::vector<LightSides> sides(t.scene.lights.size());
+  for (std::uint32_t l : lights) sides[l] = sides_of(t.scene, volumes, l);
+  return sides;
+}
+
+Footprints footprints_of(const FootprintTables& t, std::span<const std::uint32_t> lights) {
+  const Scene& scene = t.scene;
+  Footprints out;
+  auto start = util::Clock::now();
+  const std::vector<LightSides> sides = light_sides(t, lights);
   out.stats.seconds_volumes = util::seconds_since(start);
 
   start = util::Clock::now();
@@ -334,11 +361,11 @@ Footprints compute_footprints(const Scene& input, const FootprintOptions& option
   };
   std::vector<Item> items;
   for (std::uint32_t l : lights)
-    for (std::uint32_t m : models)
+    for (std::uint32_t m : t.receivers)
       for (std::uint32_t p = 0; p < scene.models[m].polygons.size(); ++p)
         items.push_back({l, m, p});
   std::vector<PolygonResult> results(items.size());
-  const Context ctx{scene, index, sides, surfaces, has_transmittance(scene)};
+  const Context ctx{scene, *t.index, sides, t.tables, t.tinted};
   out.transmittance = ctx.tinted;
   // Every item owns its exact objects (planes, arrangements, lazy numbers);
   // what they share (the scene, its index, the light sides) is doubles, so
@@ -346,7 +373,7 @@ Footprints compute_footprints(const Scene& input, const FootprintOptions& option
   // (One run in six differed with two threads while some Epeck numbers were
   // default-constructed, whose interval approximation CGAL leaves
   // uninitialized in release builds; every FT here now starts from 0.)
-  util::parallel_for(items.size(), options.threads, [&](std::size_t i) {
+  util::parallel_for(items.size(), t.threads, [&](std::size_t i) {
     results[i] = footprint_of(ctx, items[i].light, items[i].model, items[i].polygon);
   });
   for (PolygonResult& r : results) {
@@ -361,6 +388,19 @@ Footprints compute_footprints(const Scene& input, const FootprintOptions& option
   }
   out.stats.regions = out.regions.size();
   out.stats.seconds_partition = util::seconds_since(start);
+  return out;
+}
+
+}  // namespace detail
+
+Footprints compute_footprints(const Scene& input, const FootprintOptions& options) {
+  const std::vector<std::uint32_t> lights = chosen_lights(input, options);
+  auto start = util::Clock::now();
+  const detail::FootprintTables tables(input, detail::receiving_models(input, options),
+                                       options.ignore_light_end, options.threads);
+  const double seconds_tables = util::seconds_since(start);
+  Footprints out = detail::footprints_of(tables, lights);
+  out.stats.seconds_volumes += seconds_tables;
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <geometry/export/footprint_export.h>
 #include <geometry/footprint/footprint.h>
 #include <geometry/oracle/shadow_oracle.h>
+#include <tests/support/plan_view.h>
 
 #include <gtest/gtest.h>
 
@@ -61,23 +62,6 @@ Scene random_scene(std::uint64_t seed) {
   return s;
 }
 
-/// Whether (x, z) is inside the region seen from above (even-odd), and its
-/// distance to the region's outline.
-bool inside(const FootprintRegion& r, double x, double z, double& distance) {
-  bool in = false;
-  distance = 1e300;
-  const std::size_t n = r.vertices.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& a = r.vertices[i];
-    const Vec3& b = r.vertices[(i + 1) % n];
-    if ((a.z > z) != (b.z > z) && x < a.x + (z - a.z) * (b.x - a.x) / (b.z - a.z)) in = !in;
-    const double ex = b.x - a.x, ez = b.z - a.z;
-    const double t = std::clamp(((x - a.x) * ex + (z - a.z) * ez) / (ex * ex + ez * ez), 0.0, 1.0);
-    distance = std::min(distance, std::hypot(x - (a.x + t * ex), z - (a.z + t * ez)));
-  }
-  return in;
-}
-
 TEST(FootprintOracle, EveryRegionsInteriorAgreesWithTheOracleOnSeededScenes) {
   constexpr int kScenes = 60, kPoints = 400;
   int checked = 0, shadowed = 0;
@@ -103,7 +87,7 @@ TEST(FootprintOracle, EveryRegionsInteriorAgreesWithTheOracleOnSeededScenes) {
       int containing = 0;
       for (const FootprintRegion& r : f.regions) {
         double d = 0;
-        if (inside(r, x, z, d)) {
+        if (test::inside_xz(r.vertices, x, z, d)) {
           region = &r;
           ++containing;
         }
