@@ -1,5 +1,6 @@
 #include <cli/exit_codes.h>
 #include <cli/footprint_command.h>
+#include <cli/footprint_series.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
 #include <cli/scene_loading.h>
@@ -64,6 +65,17 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
                   "CPUs the process may use); the output does not depend on it")
       ->check(thread_count())
       ->type_name("N");
+  cmd->add_option("--sun-times", args.sun_times,
+                  "The sun alone over START/END/STEP (ISO 8601 instants with UTC offsets and a "
+                  "duration: 2026-03-21T00:00+01:00/2026-03-22T00:00+01:00/PT10M; the scene needs "
+                  "a site). Then -o FILE.ply holds sun hours, --csv every daylight step's sunlit "
+                  "fractions (docs/sun.md)")
+      ->type_name("START/END/STEP");
+  cmd->add_option("--schedule", args.schedule,
+                  "With --sun-times: EnergyPlus Schedule:File:Shading CSV (a row per step, a "
+                  "column per receiver polygon, front sunlit fractions)")
+      ->check(non_empty_path())
+      ->type_name("FILE.csv");
   add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
@@ -76,6 +88,9 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
 }
 
 int run_footprint(const FootprintArgs& args) {
+  if (!args.sun_times.empty()) return run_footprint_series(args);
+  if (!args.schedule.empty())
+    throw util::InputError("--schedule", "needs --sun-times (a schedule is a series of steps)");
   const auto start = util::Clock::now();
   const fs::path scene_path = args.scene;
   const fs::path output = args.output.empty()

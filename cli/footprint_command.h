@@ -1,5 +1,6 @@
 #pragma once
-// `umbra footprint SCENE -o OUT.ply|.obj|.csv [--csv FILE] [--receivers NAME,...] [-v|-q]`
+// `umbra footprint SCENE -o OUT.ply|.obj|.gltf|.glb|.csv [--csv FILE] [--receivers NAME,...]
+// [--sun-times START/END/STEP [--schedule FILE.csv]] [-v|-q]`
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -18,6 +19,9 @@ struct FootprintArgs {
   bool quiet = false;
   bool verbose = false;  ///< -v: a line per light and the times per phase on stderr
   unsigned threads = 0;
+  /// START/END/STEP: the sun over a series of instants (docs/sun.md); empty: none.
+  std::string sun_times;
+  std::string schedule;  ///< with sun_times: EnergyPlus Schedule:File:Shading CSV; empty: none
 };
 
 /// Adds the `footprint` subcommand to `app`, parsing into `args`.

@@ -7,6 +7,7 @@
 #include <cli/footprint_command.h>
 #include <cli/merge_command.h>
 #include <cli/render_command.h>
+#include <cli/sunlight_command.h>
 #include <cli/validate_command.h>
 #include <cli/verb_runner.h>
 #include <cli/version_text.h>
@@ -87,6 +88,8 @@ int main(int argc, char** argv) {
   CLI::App* volume = add_volume_command(app, volume_args);
   FootprintArgs footprint_args;
   CLI::App* footprint = add_footprint_command(app, footprint_args);
+  SunlightArgs sunlight_args;
+  CLI::App* sunlight = add_sunlight_command(app, sunlight_args);
   MergeArgs merge_args;
   CLI::App* merge = add_merge_command(app, merge_args);
   // Listed in --help only: main() hands `fuzz` to umbra-fuzz before parsing.
@@ -101,6 +104,7 @@ int main(int argc, char** argv) {
                                              : run_validate_footprint(validate_args);
     if (volume->parsed()) return run_volume(volume_args);
     if (footprint->parsed()) return run_footprint(footprint_args);
+    if (sunlight->parsed()) return run_sunlight(sunlight_args);
     if (merge->parsed()) return run_merge(merge_args);
     fmt::print(stderr, "umbra: internal error: no verb to run\n");
     return kExitInternal;

@@ -6,7 +6,7 @@
 # take seconds a frame; the gtests prove the same code under sanitizers).
 set(UMBRA_NOT_CLI_TESTS_REGEX "^layout\\.")
 set(UMBRA_SLOW_TESTS_REGEX
-  "^(fuzz\\.real\\.|fuzz\\.check\\.placements|bench\\.chart_smoke|bench\\.city_|determinism\\.|regression\\.|validate\\..*\\.exact$|validate\\.soft|tiles\\.soft)")
+  "^(fuzz\\.real\\.|fuzz\\.check\\.placements|bench\\.chart_smoke|bench\\.city_|determinism\\.|regression\\.|validate\\..*\\.exact$|validate\\.soft|tiles\\.soft|sun\\.year)")
 
 # Labels every test that add_test made in the calling directory.
 function(umbra_label_directory_tests)

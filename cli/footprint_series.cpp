@@ -1,0 +1,191 @@
+#include <cli/exit_codes.h>
+#include <cli/footprint_series.h>
+#include <cli/output_files.h>
+#include <cli/progress_bar.h>
+#include <cli/stats_json.h>
+#include <geometry/export/sun_series_export.h>
+#include <geometry/footprint/sun_footprints.h>
+#include <geometry/io/scene_json.h>
+#include <geometry/sun/sun_series.h>
+#include <util/atomic_files.h>
+#include <util/input_error.h>
+#include <util/phase_clock.h>
+#include <util/progress.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace umbra::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// What the series writes, checked before any work.
+struct SeriesOutputs {
+  fs::path hours;  ///< -o: the sun-hours footprint (.ply); empty: none
+  std::vector<NamedFile> all;
+};
+
+SeriesOutputs series_outputs(const FootprintArgs& args) {
+  if (!args.lights.empty() || args.ignore_light_end)
+    throw util::InputError("--sun-times",
+                           "the series' sun is its only light: --lights and --ignore-light-end "
+                           "choose among the scene's lights and do not combine with it");
+  if (args.output.empty() && args.csv.empty() && args.schedule.empty())
+    throw util::InputError("--sun-times",
+                           "nothing to write: give -o FILE.ply (sun hours), --csv FILE (every "
+                           "step's sunlit fractions) or --schedule FILE.csv (EnergyPlus)");
+  SeriesOutputs out;
+  if (!args.output.empty()) {
+    out.hours = args.output;
+    check_output_path(out.hours, {".ply"});
+    out.all.push_back({out.hours, "-o"});
+  }
+  if (!args.csv.empty()) {
+    check_output_path(args.csv, {".csv"});
+    out.all.push_back({args.csv, "--csv"});
+  }
+  if (!args.schedule.empty()) {
+    check_output_path(args.schedule, {".csv"});
+    out.all.push_back({args.schedule, "--schedule"});
+  }
+  if (!args.stats_json.empty() && args.stats_json != "-") {
+    check_output_path(args.stats_json, {});
+    out.all.push_back({args.stats_json, "--stats-json"});
+  }
+  return out;
+}
+
+}  // namespace
+
+int run_footprint_series(const FootprintArgs& args) {
+  const auto start = util::Clock::now();
+  const fs::path scene_path = args.scene;
+  const SeriesOutputs outputs = series_outputs(args);
+  check_outputs_distinct({{scene_path, "the input scene"}}, outputs.all);
+
+  auto phase = util::Clock::now();
+  const geometry::Scene scene = geometry::load_scene(scene_path);
+  check_outputs_distinct(scene_inputs(scene), outputs.all);
+  if (!scene.site)
+    throw util::InputError(scene_path.string(),
+                           "--sun-times needs the scene's \"site\" (latitude and longitude, "
+                           "docs/sun.md)");
+  geometry::SunSeries series;
+  geometry::FootprintOptions options;
+  options.receivers = args.receivers;
+  options.threads = args.threads;
+  std::vector<geometry::ScheduleColumn> columns;
+  std::unique_ptr<geometry::SunFootprints> engine;
+  try {
+    series = geometry::sun_series(*scene.site, args.sun_times);
+    engine = std::make_unique<geometry::SunFootprints>(scene, options);
+    if (!args.schedule.empty()) columns = geometry::schedule_columns(scene, engine->receivers());
+  } catch (const std::invalid_argument& e) {
+    throw util::InputError(scene_path.string(), e.what());
+  }
+  const double seconds_prepare = util::seconds_since(phase);
+
+  // Every step's footprint: the per-step table and the schedule's row.
+  phase = util::Clock::now();
+  std::string csv = args.csv.empty() ? std::string() : geometry::sun_series_csv_header();
+  std::vector<double> fractions(columns.size() * series.steps.size(), 0.0);
+  std::vector<std::size_t> first_column(scene.models.size(), 0);
+  for (std::size_t c = columns.size(); c-- > 0;) first_column[columns[c].model] = c;
+  std::uint64_t regions = 0, daylight = 0;
+  const bool per_step = !args.csv.empty() || !args.schedule.empty();
+  ProgressBar bar(!args.quiet);
+  util::Progress progress(bar.callback());
+  if (per_step) {
+    progress.phase("sun steps", series.steps.size());
+    for (std::size_t k = 0; k < series.steps.size(); ++k) {
+      const geometry::SunStep& step = series.steps[k];
+      if (!step.light.dark) {
+        ++daylight;
+        const geometry::Footprints f = engine->at(step.light);
+        regions += f.regions.size();
+        if (!args.csv.empty()) geometry::append_sun_series_csv(csv, step, f, scene);
+        for (const geometry::ReceiverSummary& r : f.receivers)
+          if (!columns.empty())
+            fractions[k * columns.size() + first_column[r.model] + r.polygon] = r.sunlit_fraction;
+      }
+      progress.advance(1);
+    }
+  }
+  const double seconds_steps = util::seconds_since(phase);
+
+  phase = util::Clock::now();
+  geometry::SunHours hours;
+  if (!outputs.hours.empty()) {
+    progress.phase("sun hours", 1);
+    hours = engine->sun_hours(series);
+    progress.advance(1);
+  }
+  const double seconds_hours = util::seconds_since(phase);
+  bar.finish();
+
+  phase = util::Clock::now();
+  std::vector<std::pair<fs::path, std::string>> files;
+  if (!outputs.hours.empty()) files.emplace_back(outputs.hours, geometry::sun_hours_ply(hours));
+  if (!args.csv.empty()) files.emplace_back(args.csv, std::move(csv));
+  if (!args.schedule.empty())
+    files.emplace_back(args.schedule, geometry::energyplus_schedule(series, columns, fractions));
+  util::write_all_or_nothing(files);
+  const double seconds_write = util::seconds_since(phase);
+
+  if (!per_step)
+    for (const geometry::SunStep& s : series.steps) daylight += s.light.dark ? 0 : 1;
+  if (!args.stats_json.empty()) {
+    nlohmann::ordered_json j;
+    j["scene"] = scene_path.string();
+    j["sun_times"] = args.sun_times;
+    j["steps"] = series.steps.size();
+    j["daylight_steps"] = daylight;
+    j["step_seconds"] = series.step_seconds;
+    j["receivers"] = engine->receivers().size();
+    j["schedule_columns"] = columns.size();
+    j["step_regions"] = regions;
+    if (!outputs.hours.empty())
+      j["sun_hours"] = {{"regions", hours.regions.size()},
+                        {"boundary_segments", hours.boundary_segments},
+                        {"classified_faces", hours.classified_faces}};
+    nlohmann::ordered_json suns = nlohmann::ordered_json::array();
+    for (const geometry::SunStep& s : series.steps)
+      suns.push_back({{"time", s.text},
+                      {"azimuth_deg", s.light.sun->azimuth_deg},
+                      {"zenith_deg", s.light.sun->zenith_deg},
+                      {"below_horizon", s.light.sun->below_horizon}});
+    j["sun"] = std::move(suns);
+    j["seconds"] = {{"load_and_tables", seconds_prepare},
+                    {"steps", seconds_steps},
+                    {"sun_hours", seconds_hours},
+                    {"write", seconds_write},
+                    {"total", util::seconds_since(start)}};
+    emit_json(j, args.stats_json);
+  }
+  if (args.verbose)
+    fmt::print(stderr,
+               "seconds: load and tables {:.3f}, steps {:.3f} ({:.4f} per daylight step), sun "
+               "hours {:.3f}, write {:.3f}\n",
+               seconds_prepare, seconds_steps,
+               daylight > 0 && per_step ? seconds_steps / static_cast<double>(daylight) : 0.0,
+               seconds_hours, seconds_write);
+  if (!args.quiet) {
+    std::string written;
+    for (const auto& [path, bytes] : files)
+      written += (written.empty() ? "" : " + ") + path.string();
+    fmt::print(args.stats_json == "-" ? stderr : stdout,
+               "wrote {}: {} steps ({} with the sun up) on {} receiving models, {:.2f} s\n",
+               written, series.steps.size(), daylight, engine->receivers().size(),
+               util::seconds_since(start));
+  }
+  return kExitSuccess;
+}
+
+}  // namespace umbra::cli
