@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -104,18 +105,27 @@ int run_footprint_series(const FootprintArgs& args) {
   util::Progress progress(bar.callback());
   if (per_step) {
     progress.phase("sun steps", series.steps.size());
-    for (std::size_t k = 0; k < series.steps.size(); ++k) {
-      const geometry::SunStep& step = series.steps[k];
-      if (!step.light.dark) {
+    // Steps in batches: one batch's suns share a volume build and the
+    // threads (SunFootprints::at_each); the files come out in step order.
+    constexpr std::size_t kBatch = 16;
+    std::vector<geometry::Light> suns;
+    for (std::size_t first = 0; first < series.steps.size(); first += kBatch) {
+      const std::size_t last = std::min(series.steps.size(), first + kBatch);
+      suns.clear();
+      for (std::size_t k = first; k < last; ++k) suns.push_back(series.steps[k].light);
+      const std::vector<geometry::Footprints> batch = engine->at_each(suns);
+      for (std::size_t k = first; k < last; ++k) {
+        const geometry::SunStep& step = series.steps[k];
+        if (step.light.dark) continue;
         ++daylight;
-        const geometry::Footprints f = engine->at(step.light);
+        const geometry::Footprints& f = batch[k - first];
         regions += f.regions.size();
         if (!args.csv.empty()) geometry::append_sun_series_csv(csv, step, f, scene);
         for (const geometry::ReceiverSummary& r : f.receivers)
           if (!columns.empty())
             fractions[k * columns.size() + first_column[r.model] + r.polygon] = r.sunlit_fraction;
       }
-      progress.advance(1);
+      progress.advance(last - first);
     }
   }
   const double seconds_steps = util::seconds_since(phase);

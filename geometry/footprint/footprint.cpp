@@ -1,4 +1,5 @@
 #include <geometry/exact/polygon_surface.h>
+#include <geometry/exact/predicates.h>
 #include <geometry/footprint/footprint.h>
 #include <geometry/footprint/footprint_tables.h>
 #include <geometry/footprint/light_query.h>
@@ -257,7 +258,7 @@ std::vector<std::uint32_t> receiving_models(const Scene& scene, const FootprintO
 }
 
 UnitFrame unit_frame(const ReceiverUnit& unit) {
-  UnitFrame f{receiver_unit_plane(unit), {}, {}, {}};
+  UnitFrame f{unit.vertices, receiver_unit_plane(unit), {}, {}, {}};
   for (const Vec3& v : unit.vertices) {
     f.outline.vertices.push_back(f.plane.project(v));
     f.box3.extend(v);
@@ -274,12 +275,58 @@ UnitFrame unit_frame(const ReceiverUnit& unit) {
   return f;
 }
 
+namespace {
+
+/// Whether the side of the edge (a, b) away from `light` certainly misses
+/// the piece with vertices `piece` (so misses the piece itself, its convex
+/// hull's subset): some plane bounding the side has every vertex strictly
+/// on its other side. The planes: the side's own, the one through the edge
+/// across it (the side lies beyond the edge), and the two through the
+/// light's rays along a and b (the side lies between them). Each is decided
+/// by the filtered orientation predicate; the planes across use a normal m
+/// rounded to doubles, any plane through those points and m bounds the side
+/// as long as the side's own points are off it (checked: a zero sign skips
+/// the plane). A box overlap, which the candidates passed, decides none of
+/// this; the exact construction it spares is costly (a low sun's long sides
+/// meet many boxes: half of a city step's time went there).
+bool side_misses(std::span<const Vec3> piece, const Vec3& a, const Vec3& b, const HPoint& light) {
+  const auto all_opposite = [&](auto&& sign_at, Sign side) {
+    if (side == Sign::zero) return false;
+    for (const Vec3& x : piece)
+      if (sign_at(HPoint::point(x)) != -side) return false;
+    return true;
+  };
+  const HPoint hb = HPoint::point(b);
+  // The side's plane: the piece wholly on one side of it.
+  const Sign first = orientation(a, hb, light, HPoint::point(piece[0]));
+  if (all_opposite([&](const HPoint& x) { return orientation(a, hb, light, x); }, -first))
+    return true;
+  const Vec3 e = b - a;
+  const Vec3 m = cross(e, light.finite ? light.v - a : light.v);
+  const HPoint across = HPoint::at_infinity(m);
+  // Beyond the edge: the side's points are a + s·e + t·(a + s·e − L), t > 0
+  // (t·(−w) for a light at infinity toward w), on −orientation(a, b, m, L)'s
+  // side of the plane through the edge along m.
+  if (all_opposite([&](const HPoint& x) { return orientation(a, hb, across, x); },
+                   -orientation(a, hb, across, light)))
+    return true;
+  // Between the light's rays through a and through b.
+  if (all_opposite([&](const HPoint& x) { return orientation(a, across, light, x); },
+                   orientation(a, across, light, hb)))
+    return true;
+  return all_opposite([&](const HPoint& x) { return orientation(b, across, light, x); },
+                      orientation(b, across, light, HPoint::point(a)));
+}
+
+}  // namespace
+
 void add_light_segments(const UnitFrame& frame, const LightSides& sides, const HPoint& light,
                         std::vector<Segment2>& segments, std::vector<std::uint32_t>& scratch) {
   scratch.clear();
   sides.bvh.query_box(frame.box3, 0.0, scratch);
   for (std::uint32_t s : scratch) {
     const auto& e = sides.edges[s];
+    if (side_misses(frame.vertices, e[0], e[1], light)) continue;
     add_side_segment(frame.plane, frame.box2, e[0], e[1], light, segments);
   }
 }

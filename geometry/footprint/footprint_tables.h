@@ -46,6 +46,7 @@ struct FootprintTables {
 
 /// A receiver piece in its plane: the plane, its outline and its boxes.
 struct UnitFrame {
+  std::span<const Vec3> vertices;  ///< the piece's (its ReceiverUnit's, which outlives the frame)
   ReceiverPlane plane;
   ReceiverOutline outline;
   Box box3;

@@ -142,6 +142,39 @@ Footprints SunFootprints::at(const Light& sun) {
   return footprints_of(*tables_, {&only, 1});
 }
 
+std::vector<Footprints> SunFootprints::at_each(std::span<const Light> suns) {
+  std::vector<Footprints> out(suns.size());
+  std::vector<std::uint32_t> lit;  // indices of the suns above the horizon
+  tables_->scene.lights.clear();
+  for (std::uint32_t i = 0; i < suns.size(); ++i) {
+    if (suns[i].dark) continue;
+    lit.push_back(static_cast<std::uint32_t>(tables_->scene.lights.size()));
+    tables_->scene.lights.push_back(suns[i]);
+  }
+  if (lit.empty()) return out;
+  Footprints all = footprints_of(*tables_, lit);
+  // Split by light; each sun is light 0 of its own footprint, as at() has it.
+  std::vector<std::size_t> slot;
+  for (std::size_t i = 0; i < suns.size(); ++i)
+    if (!suns[i].dark) slot.push_back(i);
+  for (FootprintRegion& r : all.regions) {
+    Footprints& f = out[slot[r.light]];
+    f.stats.vertices += r.vertices.size();
+    r.light = 0;
+    f.regions.push_back(std::move(r));
+  }
+  for (ReceiverSummary& r : all.receivers) {
+    Footprints& f = out[slot[r.light]];
+    r.light = 0;
+    f.receivers.push_back(r);
+  }
+  for (Footprints& f : out) {
+    f.transmittance = all.transmittance;
+    f.stats.regions = f.regions.size();
+  }
+  return out;
+}
+
 SunHours SunFootprints::sun_hours(const SunSeries& series) {
   SunHours out;
   out.step_seconds = series.step_seconds;

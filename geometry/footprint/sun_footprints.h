@@ -78,6 +78,11 @@ class SunFootprints {
   /// A dark sun (below the horizon) lights nothing: empty.
   Footprints at(const Light& sun);
 
+  /// at() of each sun, computed together: their volumes built at once and
+  /// every (sun, receiver) pair one work item, so that threads stay busy
+  /// whatever the receivers' sizes. The same results as at(), in order.
+  std::vector<Footprints> at_each(std::span<const Light> suns);
+
   /// Every receiver's sun hours over `series`; regions split where the set
   /// of steps that light them changes.
   SunHours sun_hours(const SunSeries& series);
