@@ -38,8 +38,9 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
          "class, facing), .obj (faces grouped by light and class as g/usemtl light<L>_lit and "
          "light<L>_shadowed, materials in the sidecar <stem>.mtl), .gltf/.glb (the regions "
          "triangulated, a node, mesh and material per light and class, named as the OBJ "
-         "groups) or .csv (one row per "
-         "light and receiver polygon); default "
+         "groups), .csv (one row per "
+         "light and receiver polygon) or .geojson (RFC 7946, WGS84: the regions on horizontal "
+         "receivers; needs the scene's site); default "
          "<scene stem>.footprint.ply in the current directory")
       ->check(non_empty_path())
       ->type_name("OUT");
@@ -98,7 +99,7 @@ int run_footprint(const FootprintArgs& args) {
                               : fs::path(args.output);
   const bool stats_to_stdout = args.stats_json == "-";
 
-  check_output_path(output, {".ply", ".obj", ".gltf", ".glb", ".csv"});
+  check_output_path(output, {".ply", ".obj", ".gltf", ".glb", ".csv", ".geojson"});
   std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
   const auto sidecar = geometry::footprint_sidecar_path(output);
   if (sidecar) {
@@ -118,6 +119,7 @@ int run_footprint(const FootprintArgs& args) {
   auto phase = util::Clock::now();
   const geometry::Scene scene = geometry::load_scene(scene_path);
   check_outputs_distinct(scene_inputs(scene), outputs);
+  geometry::check_footprint_output(scene, output);
   const double seconds_load = util::seconds_since(phase);
 
   geometry::FootprintOptions options;
@@ -139,6 +141,10 @@ int run_footprint(const FootprintArgs& args) {
   if (!args.csv.empty()) files.emplace_back(args.csv, geometry::footprint_csv(footprints, scene));
   util::write_all_or_nothing(files);
   const double seconds_write = util::seconds_since(phase);
+  if (!args.quiet) {
+    if (const auto note = geometry::footprint_output_note(footprints, scene, output))
+      fmt::print(stderr, "umbra: note: {}\n", *note);
+  }
 
   const geometry::FootprintStats& s = footprints.stats;
   if (!args.stats_json.empty()) {

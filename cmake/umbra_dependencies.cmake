@@ -8,6 +8,7 @@ find_package(simdjson REQUIRED)  # scene JSON (geometry/io/json_document.h)
 find_package(CLI11 REQUIRED)
 find_package(fmt REQUIRED)
 find_package(TinyGLTF REQUIRED)  # TinyGLTF::TinyGLTF (README.Debian's plain name is wrong)
+find_package(PROJ CONFIG REQUIRED)  # PROJ::proj, PRIVATE to umbra_geometry: geometry/export/geodetic_frame.cpp
 find_package(Threads REQUIRED)
 find_package(embree 3 REQUIRED)  # target `embree` (no namespace); Method::ray only, PRIVATE to umbra_raster
 if(UMBRA_BUILD_TESTS)

@@ -11,6 +11,7 @@ packages=(
   assimp-testmodels libassimp-dev libcgal-demo
   clang-14 libclang-rt-14-dev clang-format-14
   libembree-dev python3-matplotlib
+  libproj-dev python3-gdal
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -124,6 +124,13 @@ Sign angle_sign(const Vec3& o, const Vec3& a, const Vec3& b) {
   });
 }
 
+Sign compare_along(const Vec3& a, const Vec3& b, const Vec3& d) {
+  return filtered_sign([&](auto tag) {
+    using NT = typename decltype(tag)::type;
+    return dot3(sub<NT>(b, a), vec<NT>(d));
+  });
+}
+
 }  // namespace umbra::geometry
 
 namespace umbra::geometry {

@@ -89,6 +89,11 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
 /// it is right (or a or b is o), NEGATIVE when it is obtuse.
 Sign angle_sign(const Vec3& o, const Vec3& a, const Vec3& b);
 
+/// sign((b − a)·d), the difference b − a taken exactly: POSITIVE when b
+/// lies farther than a along direction d, ZERO when the two are at the same
+/// height along d (b − a perpendicular to d, or d zero).
+Sign compare_along(const Vec3& a, const Vec3& b, const Vec3& d);
+
 }  // namespace umbra::geometry
 
 namespace umbra::geometry {

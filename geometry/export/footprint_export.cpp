@@ -3,6 +3,7 @@
 // volume_export.cpp: double positions that read back bit-identical.
 #include <geometry/export/csv_text.h>
 #include <geometry/export/footprint_export.h>
+#include <geometry/export/footprint_geojson.h>
 #include <geometry/export/footprint_gltf.h>
 #include <geometry/export/indexed_faces.h>
 #include <geometry/export/mesh_text.h>
@@ -144,7 +145,8 @@ std::string footprint_csv(const Footprints& f, const Scene& scene) {
 
 std::optional<fs::path> footprint_sidecar_path(const fs::path& path) {
   const std::string ext = detail::to_lower(path.extension().string());
-  if (ext == ".ply" || ext == ".csv" || ext == ".gltf" || ext == ".glb") return std::nullopt;
+  if (ext == ".ply" || ext == ".csv" || ext == ".gltf" || ext == ".glb" || ext == ".geojson")
+    return std::nullopt;
   if (ext == ".obj") {
     const std::string name = path.filename().string();
     if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }))
@@ -155,7 +157,7 @@ std::optional<fs::path> footprint_sidecar_path(const fs::path& path) {
   }
   throw util::InputError(path.string(), "unknown footprint extension '" +
                                             path.extension().string() +
-                                            "'; use .ply, .obj, .gltf, .glb or .csv");
+                                            "'; use .ply, .obj, .gltf, .glb, .csv or .geojson");
 }
 
 std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& footprints,
@@ -174,12 +176,35 @@ std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& 
                        detail::gltf_footprint_bytes(footprints, ext == ".glb", path.string()));
   } else if (ext == ".csv") {
     files.emplace_back(path, footprint_csv(footprints, scene));
+  } else if (ext == ".geojson") {
+    const GeoJsonStep step{"", &footprints};
+    files.emplace_back(path, footprint_geojson(scene, std::span<const GeoJsonStep>(&step, 1)));
   } else {
     throw util::InputError(path.string(), "unknown footprint extension '" +
                                               path.extension().string() +
-                                              "'; use .ply, .obj, .gltf, .glb or .csv");
+                                              "'; use .ply, .obj, .gltf, .glb, .csv or .geojson");
   }
   return files;
+}
+
+void check_footprint_output(const Scene& scene, const fs::path& path) {
+  if (detail::to_lower(path.extension().string()) == ".geojson" && !scene.site)
+    throw util::InputError(scene.source.string(),
+                           "footprint: " + path.filename().string() +
+                               " (GeoJSON) needs the scene's \"site\": where on Earth the "
+                               "scene stands (docs/sun.md)");
+}
+
+std::optional<std::string> footprint_output_note(const Footprints& footprints, const Scene& scene,
+                                                 const fs::path& path) {
+  if (detail::to_lower(path.extension().string()) != ".geojson") return std::nullopt;
+  const GeoJsonStep step{"", &footprints};
+  const GeoJsonCounts c = footprint_geojson_counts(scene, std::span<const GeoJsonStep>(&step, 1));
+  if (c.regions_skipped == 0) return std::nullopt;
+  return path.string() + ": " + std::to_string(c.regions_skipped) + " regions on " +
+         std::to_string(c.receivers_skipped) +
+         " receivers that are not horizontal were left out (GeoJSON holds plans; the .ply "
+         "has every region)";
 }
 
 void write_footprints(const Footprints& footprints, const Scene& scene, const fs::path& path) {

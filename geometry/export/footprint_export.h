@@ -34,10 +34,13 @@ namespace umbra::geometry {
 /// - `.csv`: one row per (light, receiving model, polygon): light, model,
 ///   model_name, polygon, facing, area, lit_area, shadowed_area,
 ///   sunlit_fraction, with shortest round-trip doubles.
+/// - `.geojson`: RFC 7946, WGS84: the regions on horizontal receivers, one
+///   Feature each (footprint_geojson.h); needs the scene's site.
 ///
 /// Written whole or not at all, sidecar included (util/atomic_files.h).
 /// Throws InputError naming `path` for an unknown extension, an `.obj` name
-/// with whitespace, or a failed write.
+/// with whitespace, or a failed write, and naming the scene for a `.geojson`
+/// output of a scene without a site.
 void write_footprints(const Footprints& footprints, const Scene& scene,
                       const std::filesystem::path& path);
 
@@ -49,7 +52,18 @@ std::vector<std::pair<std::filesystem::path, std::string>> footprint_files(
 
 /// The extensions write_footprints accepts, for checking an output path
 /// before any work.
-inline constexpr const char* kFootprintExtensions[] = {".ply", ".obj", ".gltf", ".glb", ".csv"};
+inline constexpr const char* kFootprintExtensions[] = {".ply", ".obj", ".gltf",
+                                                       ".glb", ".csv", ".geojson"};
+
+/// Refuses, before any work, an output `path` the loaded `scene` cannot
+/// have: a `.geojson` footprint of a scene without a site (InputError
+/// naming the scene file).
+void check_footprint_output(const Scene& scene, const std::filesystem::path& path);
+
+/// What the output `path` leaves out, as a note for the user, or nothing:
+/// for `.geojson`, the regions on receivers that are not horizontal.
+std::optional<std::string> footprint_output_note(const Footprints& footprints, const Scene& scene,
+                                                 const std::filesystem::path& path);
 
 /// The sidecar write_footprints writes beside `path`: `<stem>.mtl` in the
 /// same directory for `.obj`; nothing for the other formats. Throws

@@ -11,7 +11,8 @@ the project) and fails, naming the chain, when a rule is broken:
 - OpenImageIO is included by raster/image_codec_oiio.cpp alone (the module
   loaded on the first image read or written), Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
-  geometry/io/json_document.h alone.
+  geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
+  alone.
 Usage: check_includes.py SOURCE_DIR   (exit 0 clean, 1 with the violations)
 """
 import pathlib
@@ -63,6 +64,8 @@ ONLY_IN = [
     ("embree3/", ("raster/methods/",)),
     ("tiny_gltf.h", ("geometry/io/",)),
     ("simdjson.h", ("geometry/io/json_document.h",)),
+    ("proj.h", ("geometry/export/geodetic_frame.cpp",)),
+    ("proj/", ("geometry/export/geodetic_frame.cpp",)),
 ]
 
 violations = []

@@ -262,5 +262,24 @@ TEST(AngleSign, MatchesRationalArithmeticAtRightAngles) {
   }
 }
 
+TEST(CompareAlong, MatchesRationalArithmeticOnNearlyLevelPoints) {
+  // 0.1 + 0.2 is not 0.3 in doubles: the heights along +y differ by an ulp.
+  EXPECT_EQ(compare_along({0, 0.3, 0}, {5, 0.3, -7}, {0, 1, 0}), Sign::zero);
+  EXPECT_EQ(compare_along({0, 0.3, 0}, {5, 0.1 + 0.2, -7}, {0, 1, 0}), Sign::positive);
+  EXPECT_EQ(compare_along({0, 0.3, 0}, {5, 0.3, -7}, {0, -2, 0}), Sign::zero);
+  EXPECT_EQ(compare_along({0, 0.3, 0}, {5, 0.1 + 0.2, -7}, {0, -2, 0}), Sign::negative);
+  EXPECT_EQ(compare_along({1, 2, 3}, {4, 5, 6}, {0, 0, 0}), Sign::zero);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coord(-100, 100);
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 a{coord(rng), coord(rng), coord(rng)}, d{coord(rng), coord(rng), coord(rng)};
+    const Vec3 b0{coord(rng), coord(rng), coord(rng)};
+    // b moved onto a's level along d in doubles: only exact arithmetic can tell.
+    const Vec3 b = b0 - (dot(b0 - a, d) / dot(d, d)) * d;
+    EXPECT_EQ(compare_along(a, b, d),
+              test::sign_of(test::dot(test::q(b) - test::q(a), test::q(d))));
+  }
+}
+
 }  // namespace
 }  // namespace umbra::geometry
