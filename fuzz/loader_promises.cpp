@@ -38,6 +38,9 @@ void check_loader_promises(const char* harness, const geometry::Scene& scene) {
   }
   for (const auto& m : scene.models) {
     UMBRA_FUZZ_CHECK(harness, !m.polygons.empty(), "model without polygons");
+    UMBRA_FUZZ_CHECK(harness,
+                     m.polygon_names.empty() || m.polygon_names.size() == m.polygons.size(),
+                     "polygon names out of step with the polygons");
     for (const auto& v : m.vertices) {
       UMBRA_FUZZ_CHECK(harness, geometry::within_coordinate_range(v),
                        "vertex not finite or outside the exact range");

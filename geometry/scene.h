@@ -94,6 +94,14 @@ struct Model {
   std::string name;
   std::vector<Vec3> vertices;  ///< world space
   std::vector<Polygon> polygons;
+  /// What each polygon is, from the file: empty when the format names
+  /// nothing (meshes, inline polygons, glTF), else exactly one per polygon
+  /// (polygon_names[k] names polygons[k]). A CityJSON model's are its
+  /// surfaces' semantic types ("RoofSurface", "WallSurface", "GroundSurface",
+  /// ...; "" for a surface without semantics), shared by the triangles of a
+  /// surface with holes. Whatever copies or filters `polygons` keeps this in
+  /// step.
+  std::vector<std::string> polygon_names;
   Rgb color{0.8, 0.8, 0.8};
   /// Blinn-Phong highlight, added only for lights that reach the sample
   /// (never in shadow: Williams' remark on highlights). Black: none.

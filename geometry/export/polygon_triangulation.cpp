@@ -2,6 +2,7 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -54,24 +55,39 @@ void mark_depths(Cdt& cdt) {
   }
 }
 
+/// The axis whose Newell normal component is largest: the one a planar
+/// ring's projection drops without collapsing it.
+int axis_to_drop(const std::vector<Vec3>& ring) {
+  const Vec3 normal = newell(ring);
+  const double nx = std::abs(normal.x), ny = std::abs(normal.y), nz = std::abs(normal.z);
+  return nx >= ny && nx >= nz ? 0 : ny >= nz ? 1 : 2;
+}
+
+K::Point_2 project(const Vec3& v, int drop) {
+  return drop == 0 ? K::Point_2(v.y, v.z) : drop == 1 ? K::Point_2(v.z, v.x) : K::Point_2(v.x, v.y);
+}
+
+/// The sign of twice the signed area of `points` as a closed ring, exactly.
+CGAL::Sign signed_area_sign(const std::vector<K::Point_2>& points) {
+  CGAL::Exact_rational twice_area = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const K::Point_2& a = points[i];
+    const K::Point_2& b = points[(i + 1) % points.size()];
+    twice_area += CGAL::Exact_rational(a.x()) * CGAL::Exact_rational(b.y()) -
+                  CGAL::Exact_rational(b.x()) * CGAL::Exact_rational(a.y());
+  }
+  return CGAL::sign(twice_area);
+}
+
 }  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> triangulate_ring(const std::vector<Vec3>& ring) {
   const std::size_t n = ring.size();
   if (n <= 3) return fan_of(n);
   // Newell's normal: its largest component names the axis to drop.
-  const Vec3 normal = newell(ring);
-  const double nx = normal.x, ny = normal.y, nz = normal.z;
-  const int drop = std::abs(nx) >= std::abs(ny) && std::abs(nx) >= std::abs(nz) ? 0
-                   : std::abs(ny) >= std::abs(nz)                               ? 1
-                                                                                : 2;
-  const auto project = [drop](const Vec3& v) {
-    return drop == 0   ? K::Point_2(v.y, v.z)
-           : drop == 1 ? K::Point_2(v.z, v.x)
-                       : K::Point_2(v.x, v.y);
-  };
+  const int drop = axis_to_drop(ring);
   std::vector<K::Point_2> points;
-  for (const Vec3& v : ring) points.push_back(project(v));
+  for (const Vec3& v : ring) points.push_back(project(v, drop));
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> handles;
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -91,6 +107,46 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_ring(const std::vector<Vec
   // CGAL's faces run counter-clockwise in the projection; the ring, now
   // known to be simple there, may not (an exact predicate decides).
   if (CGAL::orientation_2(points.begin(), points.end(), K()) == CGAL::CLOCKWISE)
+    for (auto& t : out) std::swap(t[1], t[2]);
+  return out;
+}
+
+std::optional<std::vector<std::array<std::uint32_t, 3>>> triangulate_rings(
+    const std::vector<std::vector<Vec3>>& rings) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  if (rings.empty()) return out;
+  const int drop = axis_to_drop(rings[0]);
+  Cdt cdt;
+  std::size_t distinct = 0;
+  std::uint32_t next = 0;
+  std::vector<std::vector<Cdt::Vertex_handle>> handles;
+  for (const std::vector<Vec3>& ring : rings) {
+    handles.emplace_back();
+    for (const Vec3& v : ring) {
+      const Cdt::Vertex_handle h = cdt.insert(project(v, drop));
+      if (!h->info()) {  // a new point; a repeated one keeps its first index
+        h->info() = next;
+        ++distinct;
+      }
+      ++next;
+      handles.back().push_back(h);
+    }
+  }
+  for (const std::vector<Cdt::Vertex_handle>& ring : handles)
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Cdt::Vertex_handle a = ring[i], b = ring[(i + 1) % ring.size()];
+      if (a != b) cdt.insert_constraint(a, b);  // a repeated point: no edge
+    }
+  if (cdt.number_of_vertices() != distinct) return std::nullopt;  // edges cross: a new point
+  mark_depths(cdt);
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->info() % 2 == 1)
+      out.push_back({*f->vertex(0)->info(), *f->vertex(1)->info(), *f->vertex(2)->info()});
+  // CGAL's faces run counter-clockwise in the projection; turn them the
+  // outer ring's way when that is clockwise there.
+  std::vector<K::Point_2> outer;
+  for (const Vec3& v : rings[0]) outer.push_back(project(v, drop));
+  if (signed_area_sign(outer) == CGAL::NEGATIVE)
     for (auto& t : out) std::swap(t[1], t[2]);
   return out;
 }

@@ -133,6 +133,13 @@ class Fields {
     return static_cast<int>(value);
   }
 
+  /// The text of a vertex index that failed its range check, for the
+  /// message; fails at `path` when `v` is not an integer at all.
+  std::string index_text(Element v, const std::string& path) const {
+    if (!v.is_int64() && !v.is_uint64()) fail(path, "expected a vertex index (an integer)");
+    return v.is_int64() ? std::to_string(as_int64(v)) : std::to_string(as_uint64(v));
+  }
+
   bool boolean(Element v, const std::string& path) const {
     if (!v.is_bool()) fail(path, std::string("expected true or false, found ") + kind(v));
     return as_bool(v);

@@ -6,6 +6,7 @@
 // ("lights[1].position"). The inline vertex and face arrays, a scene's bulk,
 // build a path only for a value that is wrong.
 #include <geometry/exact/coordinate_range.h>
+#include <geometry/io/cityjson_reader.h>
 #include <geometry/io/gltf_scene.h>
 #include <geometry/io/json_fields.h>
 #include <geometry/io/mesh_io.h>
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -204,11 +206,7 @@ PolygonSoup read_inline_polygons(const Fields& in, Element v, const std::string&
       std::int64_t k = -1;
       if (index.get_int64().get(k) != simdjson::SUCCESS || k < 0 || k > max_index) {
         const std::string index_path = item(face_path(), polygon.size());
-        if (!index.is_int64() && !index.is_uint64())
-          in.fail(index_path, "expected a vertex index (an integer)");
-        const std::string value = index.is_int64() ? std::to_string(json::as_int64(index))
-                                                   : std::to_string(json::as_uint64(index));
-        in.fail(index_path, "vertex index " + value + " out of range: " +
+        in.fail(index_path, "vertex index " + in.index_text(index, index_path) + " out of range: " +
                                 std::to_string(soup.vertices.size()) + " vertices");
       }
       polygon.push_back(static_cast<std::uint32_t>(k));
@@ -218,13 +216,71 @@ PolygonSoup read_inline_polygons(const Fields& in, Element v, const std::string&
   return soup;
 }
 
-Model read_model(const Fields& in, Element v, std::size_t index,
-                 std::vector<std::filesystem::path>& inputs) {
+/// The model's vertices: `soup`'s transformed to world space, each within
+/// the coordinate range; `vertex_field` names what put a vertex there when
+/// the model has no transform (the mesh or CityJSON file, or the inline
+/// vertex: given its index).
+void place_vertices(const Fields& in, const PolygonSoup& soup, const Transform& transform,
+                    bool has_transform, const std::string& path,
+                    const std::function<std::string(std::size_t)>& vertex_field, Model& model) {
+  model.vertices.reserve(soup.vertices.size());
+  for (const Vec3& p : soup.vertices) {
+    const Vec3 world = apply(transform, p);
+    if (!is_finite(world)) in.fail(child(path, "transform"), "a transformed vertex is not finite");
+    model.vertices.push_back(world);
+  }
+  for (std::size_t k = 0; k < model.vertices.size(); ++k) {
+    if (within_coordinate_range(model.vertices[k])) continue;
+    // Name what put it there: the transform, else the vertex as given.
+    const std::string at = has_transform ? child(path, "transform") : vertex_field(k);
+    in.fail(at, "vertex " + std::to_string(k) + " " + Fields::out_of_range(model.vertices[k]));
+  }
+}
+
+/// A `cityjson` entry's models, one per CityObject with surfaces, each a
+/// copy of `base` (colour, flags) with the object's id as its name
+/// (`<name>/<id>` when the entry has a name) and its polygon names.
+void read_cityjson_models(const Fields& in, Element v, const std::string& path, const Model& base,
+                          const std::optional<std::string>& prefix, const Transform& transform,
+                          bool has_transform, Scene& scene) {
+  const std::string field = child(path, "cityjson");
+  const std::string name = in.string(in.required(v, "cityjson", path), field);
+  if (name.empty()) in.fail(field, "empty CityJSON path");
+  std::optional<std::string> lod;
+  if (const std::optional<Element> lod_field = Fields::find(v, "lod")) {
+    lod = in.string(*lod_field, child(path, "lod"));
+    if (!is_lod_text(*lod))
+      in.fail(child(path, "lod"),
+              "expected a level of detail such as \"2.2\" (digits, a point, "
+              "digits)");
+  }
+  const std::filesystem::path file = in.file().parent_path() / name;
+  std::vector<CityObjectSurfaces> objects;
+  try {
+    objects = read_cityjson(file, lod);
+  } catch (const util::InputError& error) {
+    in.fail(field, error.what());  // names the CityJSON file and the JSON path in it
+  }
+  scene.inputs.push_back(file);
+  for (CityObjectSurfaces& object : objects) {
+    Model model = base;
+    model.name = prefix ? *prefix + "/" + object.id : object.id;
+    place_vertices(
+        in, object.soup, transform, has_transform, path, [&](std::size_t) { return field; }, model);
+    model.polygons = std::move(object.soup.polygons);
+    model.polygon_names = std::move(object.polygon_names);
+    scene.models.push_back(std::move(model));
+  }
+}
+
+/// Models entry `index`: one model, or one per CityObject of a `cityjson`
+/// entry, appended to `scene.models`.
+void read_models(const Fields& in, Element v, std::size_t index, Scene& scene) {
   const std::string path = item("models", index);
   in.expect_object(v, path);
   in.check_keys(v, path,
-                {"name", "mesh", "polygons", "color", "specular", "shininess", "casts_shadows",
-                 "receives", "transmittance", "transform"});
+                {"name", "mesh", "polygons", "cityjson", "lod", "color", "specular", "shininess",
+                 "casts_shadows", "receives", "transmittance", "transform"});
   Model model;
   const std::optional<Element> name = Fields::find(v, "name");
   model.name = name ? in.string(*name, child(path, "name")) : "model" + std::to_string(index);
@@ -255,8 +311,18 @@ Model read_model(const Fields& in, Element v, std::size_t index,
 
   const std::optional<Element> mesh_field = Fields::find(v, "mesh");
   const std::optional<Element> polygons = Fields::find(v, "polygons");
+  const std::optional<Element> cityjson = Fields::find(v, "cityjson");
   const bool has_mesh = mesh_field.has_value();
-  if (has_mesh == polygons.has_value()) in.fail(path, "needs exactly one of 'mesh' or 'polygons'");
+  if (has_mesh + polygons.has_value() + cityjson.has_value() != 1)
+    in.fail(path, "needs exactly one of 'mesh', 'polygons' or 'cityjson'");
+  if (!cityjson && Fields::find(v, "lod"))
+    in.fail(child(path, "lod"), "applies to 'cityjson' models only");
+  if (cityjson) {
+    const std::optional<std::string> prefix =
+        name ? std::optional<std::string>(model.name) : std::nullopt;
+    read_cityjson_models(in, v, path, model, prefix, transform, transform_field.has_value(), scene);
+    return;
+  }
   PolygonSoup soup;
   if (has_mesh) {
     const std::string mesh_path = child(path, "mesh");
@@ -264,30 +330,21 @@ Model read_model(const Fields& in, Element v, std::size_t index,
     if (mesh.empty()) in.fail(mesh_path, "empty mesh path");
     try {
       soup = read_polygon_soup(in.file().parent_path() / mesh);
-      inputs.insert(inputs.end(), soup.files.begin(), soup.files.end());
+      scene.inputs.insert(scene.inputs.end(), soup.files.begin(), soup.files.end());
     } catch (const util::InputError& error) {
       in.fail(mesh_path, error.what());  // the mesh reader's message names the mesh file and line
     }
   } else {
     soup = read_inline_polygons(in, *polygons, child(path, "polygons"));
   }
-
-  model.vertices.reserve(soup.vertices.size());
-  for (const Vec3& p : soup.vertices) {
-    const Vec3 world = apply(transform, p);
-    if (!is_finite(world)) in.fail(child(path, "transform"), "a transformed vertex is not finite");
-    model.vertices.push_back(world);
-  }
-  for (std::size_t k = 0; k < model.vertices.size(); ++k) {
-    if (within_coordinate_range(model.vertices[k])) continue;
-    // Name what put it there: the transform, else the vertex as given.
-    const std::string at = transform_field ? child(path, "transform")
-                           : has_mesh      ? child(path, "mesh")
-                                           : item(child(child(path, "polygons"), "vertices"), k);
-    in.fail(at, "vertex " + std::to_string(k) + " " + Fields::out_of_range(model.vertices[k]));
-  }
+  place_vertices(
+      in, soup, transform, transform_field.has_value(), path,
+      [&](std::size_t k) {
+        return has_mesh ? child(path, "mesh") : item(child(child(path, "polygons"), "vertices"), k);
+      },
+      model);
   model.polygons = std::move(soup.polygons);
-  return model;
+  scene.models.push_back(std::move(model));
 }
 
 /// DESIGN.md defines τ(P) for point and directional lights only: a soft
@@ -338,10 +395,7 @@ Scene parse_scene(std::string_view json_text, const std::filesystem::path& file,
   const Array models = in.array(in.required(root, "models", ""), "models");
   if (models.begin() == models.end()) in.fail("models", "a scene needs at least one model");
   std::size_t i = 0;
-  for (const Element model : models) {
-    scene.models.push_back(read_model(in, model, i, scene.inputs));
-    ++i;
-  }
+  for (const Element model : models) read_models(in, model, i++, scene);
   refuse_tinted_area_lights(in, scene);
   return scene;
 }

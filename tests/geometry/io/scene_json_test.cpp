@@ -416,7 +416,7 @@ TEST(SceneIo, LightRules) {
 
 TEST(SceneIo, ModelRules) {
   EXPECT_EQ(scene_error(scene("[]", R"([{"name": "a"}])")),
-            kFile + ": models[0]: needs exactly one of 'mesh' or 'polygons'");
+            kFile + ": models[0]: needs exactly one of 'mesh', 'polygons' or 'cityjson'");
   EXPECT_EQ(scene_error(scene(
                 "[]", std::string("[") + kTriangle +
                           R"(, {"mesh": "meshes/quad.off", "transform": {"scale": [1, 0, 1]}}])")),
