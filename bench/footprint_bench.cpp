@@ -74,30 +74,6 @@ struct Row {
   std::map<int, std::pair<double, double>> pixels;  ///< resolution: (seconds, worst error)
 };
 
-/// The worst |counted - exact| over receiver polygons whose every part
-/// faces the sun, the exact fraction taken as pixel counting weighs it: by
-/// area seen from the sun (for a planar receiver, its sunlit fraction).
-double worst_error(const Case& c, const geometry::Footprints& f, const PixelCount& px) {
-  const geometry::Vec3 s = c.scene.lights[0].direction;
-  const double len = std::sqrt(s.x * s.x + s.y * s.y + s.z * s.z);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, double>> seen;  // lit, all
-  for (const geometry::FootprintRegion& r : f.regions) {
-    const double area = std::abs(geometry::dot(geometry::newell(r.vertices), s)) / (2 * len);
-    auto& e = seen[{r.model, r.polygon}];
-    e.second += area;
-    if (r.cls == geometry::FootprintClass::lit) e.first += area;
-  }
-  double worst = 0;
-  for (const geometry::ReceiverSummary& r : f.receivers) {
-    if (r.facing != 1) continue;
-    const auto& e = seen[{r.model, r.polygon}];
-    if (!(e.second > 0)) continue;
-    const double counted = px.sunlit_fraction[px.first_polygon[r.model] + r.polygon];
-    worst = std::max(worst, std::abs(counted - e.first / e.second));
-  }
-  return worst;
-}
-
 Row run_case(const Case& c, const std::vector<int>& resolutions, int repeat, unsigned threads) {
   Row row;
   for (const geometry::Model& m : c.scene.models)
@@ -124,7 +100,7 @@ Row run_case(const Case& c, const std::vector<int>& resolutions, int repeat, uns
     for (const int res : resolutions) {
       const PixelCount px = count_pixels(c.scene, receiving, res);
       pixel_seconds[res].push_back(px.seconds);
-      if (k == 0) row.pixels[res].second = worst_error(c, f, px);
+      if (k == 0) row.pixels[res].second = count_errors(c.scene.lights[0].direction, f, px).worst;
     }
   }
   row.seconds = median(seconds);

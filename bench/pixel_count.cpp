@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
+#include <utility>
 
 namespace umbra::bench {
 
@@ -103,6 +105,29 @@ PixelCount count_pixels(const geometry::Scene& scene, const std::vector<std::uin
     }
   }
   out.seconds = util::seconds_since(start);
+  return out;
+}
+
+CountErrors count_errors(const Vec3& sun, const geometry::Footprints& f, const PixelCount& px) {
+  const double len = std::sqrt(geometry::dot(sun, sun));
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, double>> seen;  // lit, all
+  for (const geometry::FootprintRegion& r : f.regions) {
+    const double area = std::abs(geometry::dot(geometry::newell(r.vertices), sun)) / (2 * len);
+    auto& e = seen[{r.model, r.polygon}];
+    e.second += area;
+    if (r.cls == geometry::FootprintClass::lit) e.first += area;
+  }
+  CountErrors out;
+  for (const geometry::ReceiverSummary& r : f.receivers) {
+    if (r.facing != 1) continue;
+    const auto& e = seen[{r.model, r.polygon}];
+    if (!(e.second > 0)) continue;
+    const double counted = px.sunlit_fraction[px.first_polygon[r.model] + r.polygon];
+    const double error = std::abs(counted - e.first / e.second);
+    out.worst = std::max(out.worst, error);
+    out.sum += error;
+    ++out.receivers;
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 // polygon-ID buffer, as EnergyPlus's GPU shading and GIS tools do, and each
 // receiver's sunlit fraction taken as its visible texels over its area seen
 // from the sun.
+#include <geometry/footprint/footprint.h>
 #include <geometry/scene.h>
 
 #include <cstdint>
@@ -26,5 +27,15 @@ struct PixelCount {
 /// which must be directional.
 PixelCount count_pixels(const geometry::Scene& scene, const std::vector<std::uint32_t>& receivers,
                         int resolution);
+
+/// |counted - exact| over the receiver polygons of `f` whose every part
+/// faces the sun, the exact fraction taken as pixel counting weighs it: by
+/// area seen along `sun` (for a planar receiver, its sunlit fraction).
+struct CountErrors {
+  double worst = 0, sum = 0;
+  std::uint64_t receivers = 0;
+};
+CountErrors count_errors(const geometry::Vec3& sun, const geometry::Footprints& f,
+                         const PixelCount& px);
 
 }  // namespace umbra::bench

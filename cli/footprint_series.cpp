@@ -3,6 +3,7 @@
 #include <cli/output_files.h>
 #include <cli/progress_bar.h>
 #include <cli/stats_json.h>
+#include <geometry/export/footprint_geojson.h>
 #include <geometry/export/sun_series_export.h>
 #include <geometry/footprint/sun_footprints.h>
 #include <geometry/io/scene_json.h>
@@ -29,7 +30,8 @@ namespace {
 
 /// What the series writes, checked before any work.
 struct SeriesOutputs {
-  fs::path hours;  ///< -o: the sun-hours footprint (.ply); empty: none
+  fs::path hours;    ///< -o FILE.ply: the sun-hours footprint; empty: none
+  fs::path geojson;  ///< -o FILE.geojson: every step's regions; empty: none
   std::vector<NamedFile> all;
 };
 
@@ -40,13 +42,14 @@ SeriesOutputs series_outputs(const FootprintArgs& args) {
                            "choose among the scene's lights and do not combine with it");
   if (args.output.empty() && args.csv.empty() && args.schedule.empty())
     throw util::InputError("--sun-times",
-                           "nothing to write: give -o FILE.ply (sun hours), --csv FILE (every "
-                           "step's sunlit fractions) or --schedule FILE.csv (EnergyPlus)");
+                           "nothing to write: give -o FILE.ply (sun hours), -o FILE.geojson (every "
+                           "step's regions), --csv FILE (every step's sunlit fractions) or "
+                           "--schedule FILE.csv (EnergyPlus)");
   SeriesOutputs out;
   if (!args.output.empty()) {
-    out.hours = args.output;
-    check_output_path(out.hours, {".ply"});
-    out.all.push_back({out.hours, "-o"});
+    check_output_path(args.output, {".ply", ".geojson"});
+    (lowercase_extension(args.output) == ".geojson" ? out.geojson : out.hours) = args.output;
+    out.all.push_back({args.output, "-o"});
   }
   if (!args.csv.empty()) {
     check_output_path(args.csv, {".csv"});
@@ -95,12 +98,14 @@ int run_footprint_series(const FootprintArgs& args) {
 
   // Every step's footprint: the per-step table and the schedule's row.
   phase = util::Clock::now();
-  std::string csv = args.csv.empty() ? std::string() : geometry::sun_series_csv_header();
+  std::string csv = args.csv.empty() ? std::string() : geometry::sun_series_csv_header(scene);
   std::vector<double> fractions(columns.size() * series.steps.size(), 0.0);
   std::vector<std::size_t> first_column(scene.models.size(), 0);
   for (std::size_t c = columns.size(); c-- > 0;) first_column[columns[c].model] = c;
   std::uint64_t regions = 0, daylight = 0;
-  const bool per_step = !args.csv.empty() || !args.schedule.empty();
+  const bool per_step = !args.csv.empty() || !args.schedule.empty() || !outputs.geojson.empty();
+  std::vector<geometry::Footprints> kept;  // every daylight step's, for GeoJSON
+  std::vector<geometry::GeoJsonStep> geo_steps;
   ProgressBar bar(!args.quiet);
   util::Progress progress(bar.callback());
   if (per_step) {
@@ -113,17 +118,21 @@ int run_footprint_series(const FootprintArgs& args) {
       const std::size_t last = std::min(series.steps.size(), first + kBatch);
       suns.clear();
       for (std::size_t k = first; k < last; ++k) suns.push_back(series.steps[k].light);
-      const std::vector<geometry::Footprints> batch = engine->at_each(suns);
+      std::vector<geometry::Footprints> batch = engine->at_each(suns);
       for (std::size_t k = first; k < last; ++k) {
         const geometry::SunStep& step = series.steps[k];
         if (step.light.dark) continue;
         ++daylight;
-        const geometry::Footprints& f = batch[k - first];
+        geometry::Footprints& f = batch[k - first];
         regions += f.regions.size();
         if (!args.csv.empty()) geometry::append_sun_series_csv(csv, step, f, scene);
         for (const geometry::ReceiverSummary& r : f.receivers)
           if (!columns.empty())
             fractions[k * columns.size() + first_column[r.model] + r.polygon] = r.sunlit_fraction;
+        if (!outputs.geojson.empty()) {
+          kept.push_back(std::move(f));
+          geo_steps.push_back({step.text, nullptr});
+        }
       }
       progress.advance(last - first);
     }
@@ -143,11 +152,21 @@ int run_footprint_series(const FootprintArgs& args) {
   phase = util::Clock::now();
   std::vector<std::pair<fs::path, std::string>> files;
   if (!outputs.hours.empty()) files.emplace_back(outputs.hours, geometry::sun_hours_ply(hours));
+  geometry::GeoJsonCounts geo_counts;
+  if (!outputs.geojson.empty()) {
+    for (std::size_t i = 0; i < kept.size(); ++i) geo_steps[i].footprints = &kept[i];
+    files.emplace_back(outputs.geojson, geometry::footprint_geojson(scene, geo_steps, &geo_counts));
+  }
   if (!args.csv.empty()) files.emplace_back(args.csv, std::move(csv));
   if (!args.schedule.empty())
     files.emplace_back(args.schedule, geometry::energyplus_schedule(series, columns, fractions));
   util::write_all_or_nothing(files);
   const double seconds_write = util::seconds_since(phase);
+  if (!args.quiet && geo_counts.regions_skipped > 0)
+    fmt::print(stderr,
+               "umbra: note: {}: {} regions on {} receivers that are not horizontal were left "
+               "out (GeoJSON holds plans: docs/sun.md)\n",
+               outputs.geojson.string(), geo_counts.regions_skipped, geo_counts.receivers_skipped);
 
   if (!per_step)
     for (const geometry::SunStep& s : series.steps) daylight += s.light.dark ? 0 : 1;

@@ -116,6 +116,22 @@ struct Model {
   bool receives = true;
 };
 
+/// Polygon p's name (a CityJSON surface's semantic type), or "" when the
+/// model names none.
+inline const std::string& polygon_name(const Model& model, std::size_t p) {
+  static const std::string none;
+  return p < model.polygon_names.size() ? model.polygon_names[p] : none;
+}
+
+/// Some receiving polygon of `models` has a name: the tables that list
+/// receivers then carry a polygon_name column.
+inline bool names_polygons(const std::vector<Model>& models) {
+  for (const Model& m : models)
+    for (const std::string& n : m.polygon_names)
+      if (!n.empty()) return true;
+  return false;
+}
+
 struct Scene {
   Camera camera;
   /// false: the file has no camera and `camera` is a placeholder nobody may

@@ -128,8 +128,13 @@ std::string mtl_text(const Footprints& f) {
 }  // namespace
 
 std::string footprint_csv(const Footprints& f, const Scene& scene) {
+  // CityJSON surfaces' types, when the scene has them, in a last column
+  // (so that the columns before it never move).
+  const bool named = names_polygons(scene.models);
   std::string out =
-      "light,model,model_name,polygon,facing,area,lit_area,shadowed_area,sunlit_fraction\n";
+      "light,model,model_name,polygon,facing,area,lit_area,shadowed_area,"
+      "sunlit_fraction";
+  out += named ? ",polygon_name\n" : "\n";
   for (const ReceiverSummary& r : f.receivers) {
     out += std::to_string(r.light) + ',' + std::to_string(r.model) + ',' +
            csv_field(scene.models[r.model].name) + ',' + std::to_string(r.polygon) + ',' +
@@ -138,6 +143,7 @@ std::string footprint_csv(const Footprints& f, const Scene& scene) {
       out += ',';
       append_double(out, v);
     }
+    if (named) out += ',' + csv_field(polygon_name(scene.models[r.model], r.polygon));
     out += '\n';
   }
   return out;

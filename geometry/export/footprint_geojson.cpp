@@ -125,6 +125,8 @@ void append_feature(std::string& out, const Scene& scene, GeodeticFrame& frame,
   out += R"(,"model":)" + std::to_string(r.model);
   out += R"(,"model_name":)" + json_string(scene.models[r.model].name);
   out += R"(,"polygon":)" + std::to_string(r.polygon);
+  if (const std::string& name = polygon_name(scene.models[r.model], r.polygon); !name.empty())
+    out += R"(,"polygon_name":)" + json_string(name);
   out += R"(,"triangle":)" + std::to_string(r.triangle);
   out += R"(,"area_m2":)";
   append_double(out, r.area);

@@ -11,9 +11,11 @@
 
 namespace umbra::geometry {
 
-std::string sun_series_csv_header() {
-  return "time,zenith_deg,azimuth_deg,model,model_name,polygon,facing,area,lit_area,"
-         "shadowed_area,sunlit_fraction\n";
+std::string sun_series_csv_header(const Scene& scene) {
+  return std::string(
+             "time,zenith_deg,azimuth_deg,model,model_name,polygon,facing,area,lit_area,"
+             "shadowed_area,sunlit_fraction") +
+         (names_polygons(scene.models) ? ",polygon_name\n" : "\n");
 }
 
 void append_sun_series_csv(std::string& out, const SunStep& step, const Footprints& footprint,
@@ -22,6 +24,7 @@ void append_sun_series_csv(std::string& out, const SunStep& step, const Footprin
   append_double(prefix, step.light.sun->zenith_deg);
   prefix += ',';
   append_double(prefix, step.light.sun->azimuth_deg);
+  const bool named = names_polygons(scene.models);
   for (const ReceiverSummary& r : footprint.receivers) {
     out += prefix;
     out += ',' + std::to_string(r.model) + ',' + csv_field(scene.models[r.model].name) + ',' +
@@ -30,6 +33,7 @@ void append_sun_series_csv(std::string& out, const SunStep& step, const Footprin
       out += ',';
       append_double(out, v);
     }
+    if (named) out += ',' + csv_field(polygon_name(scene.models[r.model], r.polygon));
     out += '\n';
   }
 }
@@ -48,6 +52,15 @@ std::vector<ScheduleColumn> schedule_columns(const Scene& scene,
     for (std::uint32_t p = 0; p < model.polygons.size(); ++p) {
       ScheduleColumn c{
           m, p, model.polygons.size() == 1 ? model.name : fmt::format("{}:{}", model.name, p)};
+      // A CityJSON surface's type says which surface it is ("b1:3:WallSurface").
+      if (const std::string& name = polygon_name(model, p); !name.empty()) {
+        if (name.find_first_of(",\"\r\n") != std::string::npos)
+          throw std::invalid_argument(fmt::format(
+              "--schedule: polygon {} of model {} is named '{}', which an EnergyPlus surface "
+              "name cannot hold (a comma, quote or line break)",
+              p, m, name));
+        c.name += ':' + name;
+      }
       const auto [it, added] = seen.emplace(c.name, columns.size());
       if (!added)
         throw std::invalid_argument(fmt::format(

@@ -15,8 +15,8 @@ namespace umbra::geometry {
 
 /// The header of the per-step table: time, zenith_deg, azimuth_deg, model,
 /// model_name, polygon, facing, area, lit_area, shadowed_area,
-/// sunlit_fraction.
-std::string sun_series_csv_header();
+/// sunlit_fraction, and polygon_name when the scene names polygons.
+std::string sun_series_csv_header(const Scene& scene);
 
 /// One row per receiver polygon of `footprint` (the sun of `step` alone),
 /// shortest round-trip doubles.
@@ -32,7 +32,8 @@ struct ScheduleColumn {
 
 /// The schedule's columns, receivers in order: a model's name for a model
 /// with one polygon (name each surface of an EnergyPlus model as a model
-/// of its own and the names carry over), `name:polygon` otherwise. Throws
+/// of its own and the names carry over), `name:polygon` otherwise, then
+/// `:type` for a polygon with a name (a CityJSON surface's semantic type). Throws
 /// std::invalid_argument with one line for two columns of one name or a
 /// name EnergyPlus's CSV reader cannot hold (empty, a comma, a quote or a
 /// line break).

@@ -8,7 +8,8 @@ Schedule:File:Shading layout (docs/sun.md "Time series"):
   number in [0, 1];
 - every row of the per-step CSV has the same sunlit fraction, to the bit, in
   the schedule's row of its time and the column of its surface (a model's
-  name when it has one polygon, else name:polygon); schedule rows of steps
+  name when it has one polygon, else name:polygon, then :type for a named
+  polygon); schedule rows of steps
   the CSV lacks (the sun down) are all 0;
 - with a sun-hours PLY: per receiver polygon the regions' areas (Newell's
   formula on the file's doubles) add up to its area; sun_hours is
@@ -75,6 +76,8 @@ def main():
         k = by_label.get(t.strftime("%m/%d %H:%M"))
         name = r["model_name"] if len(polygons[r["model"]]) == 1 else "%s:%s" % (
             r["model_name"], r["polygon"])
+        if r.get("polygon_name"):  # a CityJSON surface's type
+            name += ":" + r["polygon_name"]
         if k is None or name not in names:
             failures.append("no schedule cell for %s %s" % (r["time"], name))
             continue
