@@ -10,6 +10,7 @@
 #include <geometry/exact/polygon_surface.h>
 #include <geometry/footprint/footprint.h>
 #include <geometry/io/scene_json.h>
+#include <geometry/sun/sun_light.h>
 #include <raster/methods/shadow_map.h>
 
 #include <gtest/gtest.h>
@@ -152,6 +153,27 @@ TEST(FootprintPixelCount, SunlitFractionsAgreeWithACountAt4096OnTheDefaultScene)
   EXPECT_GE(c.receivers, 18u);
   EXPECT_GE(c.tight, 16u);
   EXPECT_GE(c.partial, 2u);
+}
+
+TEST(FootprintPixelCount, TheCityJsonBlockAtThreeSunsOfTheEquinox) {
+  // data/scenes/city/block.json's sun at 09:00, 12:00 and 15:00 on 21 March
+  // (SPA at the site), as `umbra footprint --sun-times` takes it: the ground,
+  // a flat-roofed building and the one with a window hole receive.
+  geometry::Scene scene =
+      geometry::load_scene(std::string(UMBRA_DATA_DIR) + "/scenes/city/block.json");
+  std::size_t receivers = 0, partial = 0;
+  for (const char* time :
+       {"2026-03-21T09:00:00+01:00", "2026-03-21T12:00:00+01:00", "2026-03-21T15:00:00+01:00"}) {
+    std::string why;
+    const auto t = geometry::parse_iso_time(time, why);
+    ASSERT_TRUE(t) << why;
+    scene.lights = {geometry::sun_light(*scene.site, *t, time, {1, 1, 1})};
+    const Counted c = compare(scene, {"ground", "b1", "b4"});
+    receivers += c.receivers;
+    partial += c.partial;
+  }
+  EXPECT_GE(receivers, 12u);
+  EXPECT_GE(partial, 3u) << "the ground is partly shadowed at every hour";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <geometry/footprint/footprint_check.h>
 #include <geometry/footprint/sun_footprints.h>
 #include <geometry/io/footprint_reader.h>
+#include <geometry/io/scene_json.h>
 #include <geometry/oracle/shadow_oracle.h>
 #include <geometry/sun/sun_series.h>
 #include <tests/support/plan_view.h>
@@ -97,6 +98,33 @@ TEST(SunFootprints, EveryStepOfADayValidatesAgainstTheOracle) {
   }
   EXPECT_GT(steps, 60);  // midsummer in Delft: over 16 hours of sun
   EXPECT_GT(points, 60u * 10);
+}
+
+TEST(SunFootprints, EveryStepOfTheCityJsonBlocksEquinoxValidates) {
+  // data/scenes/city/block.json (CityJSON buildings in Delft: flat and
+  // gabled roofs, a part, a wall with a window hole) at 15 minutes.
+  const Scene scene = load_scene(std::string(UMBRA_DATA_DIR) + "/scenes/city/block.json");
+  const SunSeries series =
+      sun_series(*scene.site, "2026-03-21T00:00+01:00/2026-03-22T00:00+01:00/PT15M");
+  FootprintOptions options;
+  options.threads = 2;
+  SunFootprints engine(scene, options);
+  std::vector<Light> suns;
+  for (const SunStep& step : series.steps) suns.push_back(step.light);
+  const std::vector<Footprints> all = engine.at_each(suns);
+  int steps = 0;
+  for (std::size_t k = 0; k < series.steps.size(); ++k) {
+    if (suns[k].dark) continue;
+    Scene alone = scene;
+    alone.lights = {suns[k]};
+    const std::string bytes = footprint_files(all[k], alone, "s.ply").at(0).second;
+    const FootprintCheckReport report =
+        check_footprint(alone, parse_footprint_ply(bytes, series.steps[k].text + ".ply"));
+    EXPECT_TRUE(report.ok()) << series.steps[k].text << ": "
+                             << (report.listed.empty() ? "" : report.listed[0]);
+    ++steps;
+  }
+  EXPECT_EQ(steps, 49);  // 06:45 to 18:45: a little over twelve hours of sun
 }
 
 TEST(SunFootprints, SunHoursAgreeWithTheOracleStepByStep) {
