@@ -99,7 +99,9 @@ int run_footprint_series(const FootprintArgs& args) {
   // Every step's footprint: the per-step table and the schedule's row.
   phase = util::Clock::now();
   std::string csv = args.csv.empty() ? std::string() : geometry::sun_series_csv_header(scene);
-  std::vector<double> fractions(columns.size() * series.steps.size(), 0.0);
+  std::string schedule =
+      args.schedule.empty() ? std::string() : geometry::energyplus_schedule_header(columns);
+  std::vector<double> fractions(columns.size());  // the row of one step
   std::vector<std::size_t> first_column(scene.models.size(), 0);
   for (std::size_t c = columns.size(); c-- > 0;) first_column[columns[c].model] = c;
   std::uint64_t regions = 0, daylight = 0;
@@ -121,14 +123,20 @@ int run_footprint_series(const FootprintArgs& args) {
       std::vector<geometry::Footprints> batch = engine->at_each(suns);
       for (std::size_t k = first; k < last; ++k) {
         const geometry::SunStep& step = series.steps[k];
-        if (step.light.dark) continue;
+        std::fill(fractions.begin(), fractions.end(), 0.0);  // the sun down: 0
+        if (step.light.dark) {
+          if (!args.schedule.empty()) geometry::append_energyplus_row(schedule, step, fractions);
+          continue;
+        }
         ++daylight;
         geometry::Footprints& f = batch[k - first];
         regions += f.regions.size();
         if (!args.csv.empty()) geometry::append_sun_series_csv(csv, step, f, scene);
-        for (const geometry::ReceiverSummary& r : f.receivers)
-          if (!columns.empty())
-            fractions[k * columns.size() + first_column[r.model] + r.polygon] = r.sunlit_fraction;
+        if (!args.schedule.empty()) {
+          for (const geometry::ReceiverSummary& r : f.receivers)
+            fractions[first_column[r.model] + r.polygon] = r.sunlit_fraction;
+          geometry::append_energyplus_row(schedule, step, fractions);
+        }
         if (!outputs.geojson.empty()) {
           kept.push_back(std::move(f));
           geo_steps.push_back({step.text, nullptr});
@@ -158,8 +166,7 @@ int run_footprint_series(const FootprintArgs& args) {
     files.emplace_back(outputs.geojson, geometry::footprint_geojson(scene, geo_steps, &geo_counts));
   }
   if (!args.csv.empty()) files.emplace_back(args.csv, std::move(csv));
-  if (!args.schedule.empty())
-    files.emplace_back(args.schedule, geometry::energyplus_schedule(series, columns, fractions));
+  if (!args.schedule.empty()) files.emplace_back(args.schedule, std::move(schedule));
   util::write_all_or_nothing(files);
   const double seconds_write = util::seconds_since(phase);
   if (!args.quiet && geo_counts.regions_skipped > 0)

@@ -73,24 +73,21 @@ std::vector<ScheduleColumn> schedule_columns(const Scene& scene,
   return columns;
 }
 
-std::string energyplus_schedule(const SunSeries& series, std::span<const ScheduleColumn> columns,
-                                std::span<const double> fractions) {
-  if (fractions.size() != series.steps.size() * columns.size())
-    throw std::invalid_argument("energyplus_schedule: one fraction per step and column needed");
+std::string energyplus_schedule_header(std::span<const ScheduleColumn> columns) {
   std::string out = "Surface Name";
   for (const ScheduleColumn& c : columns) out += ',' + c.name;
-  out += '\n';
-  std::size_t k = 0;
-  for (const SunStep& step : series.steps) {
-    out += fmt::format("{:02}/{:02} {:02}:{:02}", step.time.month, step.time.day, step.time.hour,
-                       step.time.minute);
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      out += ',';
-      append_double(out, fractions[k++]);
-    }
-    out += '\n';
+  return out + '\n';
+}
+
+void append_energyplus_row(std::string& out, const SunStep& step,
+                           std::span<const double> fractions) {
+  out += fmt::format("{:02}/{:02} {:02}:{:02}", step.time.month, step.time.day, step.time.hour,
+                     step.time.minute);
+  for (double f : fractions) {
+    out += ',';
+    append_double(out, f);
   }
-  return out;
+  out += '\n';
 }
 
 std::string sun_hours_ply(const SunHours& hours) {

@@ -40,14 +40,16 @@ struct ScheduleColumn {
 std::vector<ScheduleColumn> schedule_columns(const Scene& scene,
                                              std::span<const std::uint32_t> receivers);
 
-/// EnergyPlus's Schedule:File:Shading CSV: the header `Surface Name,` and
-/// the column names, then one row per step of `series`, its time as
-/// `MM/DD HH:MM` (in the series' offset) and each column's sunlit fraction
-/// from `fractions` (row-major: step, then column). EnergyPlus reads the
-/// rows in order, one per timestep of its run period (8,760 × timesteps
-/// per hour for a year), not their labels.
-std::string energyplus_schedule(const SunSeries& series, std::span<const ScheduleColumn> columns,
-                                std::span<const double> fractions);
+/// EnergyPlus's Schedule:File:Shading CSV, written row by row as the steps
+/// come (a year of a city's surfaces is too big to hold twice): the header
+/// `Surface Name,` and the column names; then per step of the series its
+/// time as `MM/DD HH:MM` (in the series' offset) and each column's sunlit
+/// fraction, `fractions` in column order. EnergyPlus reads the rows in
+/// order, one per timestep of its run period (8,760 × timesteps per hour
+/// for a year), not their labels.
+std::string energyplus_schedule_header(std::span<const ScheduleColumn> columns);
+void append_energyplus_row(std::string& out, const SunStep& step,
+                           std::span<const double> fractions);
 
 /// Binary little-endian PLY of the sun-hours regions: double vertices; int
 /// face properties model, polygon, triangle, lit_steps, lit_runs; double

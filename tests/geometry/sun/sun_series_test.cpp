@@ -131,8 +131,10 @@ TEST(EnergyPlusSchedule, HeaderColumnsAndRows) {
   EXPECT_EQ(columns[0].name, "SOUTH WALL");
   EXPECT_EQ(columns[2].name, "roof:1");
   const SunSeries s = sun_series(delft(), "2026-03-21T11:00+01:00/2026-03-21T12:00+01:00/PT30M");
-  const std::vector<double> fractions{1, 0.25, 0, 0.5, 1.0 / 3, 1};
-  EXPECT_EQ(energyplus_schedule(s, columns, fractions),
+  std::string text = energyplus_schedule_header(columns);
+  append_energyplus_row(text, s.steps[0], std::vector<double>{1, 0.25, 0});
+  append_energyplus_row(text, s.steps[1], std::vector<double>{0.5, 1.0 / 3, 1});
+  EXPECT_EQ(text,
             "Surface Name,SOUTH WALL,roof:0,roof:1\n"
             "03/21 11:00,1,0.25,0\n"
             "03/21 11:30,0.5,0.3333333333333333,1\n");
