@@ -74,6 +74,9 @@ std::optional<IsoTime> parse_iso_time(std::string_view text, std::string& why) {
       if (pos == first) return fail("expected digits after the decimal mark");
     }
   }
+  // SPA's periodic terms hold for the years -2000 to 6000 (its report):
+  // a later sun is refused rather than silently wrong.
+  if (t.year > 6000) return fail("the year must be at most 6000 (SPA's range)");
   if (t.month < 1 || t.month > 12) return fail("month must be 01 to 12");
   if (t.day < 1 || t.day > days_in_month(t.year, t.month)) return fail("no such day in that month");
   if (t.hour > 23) return fail("hour must be 00 to 23");

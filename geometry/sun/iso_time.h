@@ -16,8 +16,9 @@ struct IsoTime {
 };
 
 /// Parses YYYY-MM-DDTHH:MM[:SS[.fraction]] followed by Z, ±HH:MM, ±HHMM or
-/// ±HH. The date must exist (Gregorian leap years), hours 0–23, minutes and
-/// seconds below 60, the offset within ±18 h (SPA's bound). On failure,
+/// ±HH. The year at most 6000 (SPA's range), the date must exist (Gregorian
+/// leap years), hours 0–23, minutes and seconds below 60, the offset within
+/// ±18 h (SPA's bound). On failure,
 /// nullopt and `why` says what is wrong, in a few words.
 std::optional<IsoTime> parse_iso_time(std::string_view text, std::string& why);
 

@@ -45,6 +45,7 @@ TEST(IsoTime, OffsetsAndFractions) {
 TEST(IsoTime, RefusesWhatNamesNoMoment) {
   EXPECT_NE(refusal("2026-03-21T12:00:00").find("needs a UTC offset"), std::string::npos);
   EXPECT_EQ(refusal("2023-02-29T00:00Z"), "no such day in that month");
+  EXPECT_EQ(refusal("7000-03-21T12:00Z"), "the year must be at most 6000 (SPA's range)");
   EXPECT_EQ(refusal("2026-03-21T24:00Z"), "hour must be 00 to 23");
   EXPECT_EQ(refusal("2026-03-21T12:00:60Z"), "second must be below 60");
   EXPECT_EQ(refusal("2026-03-21T12:00+19:00"), "the offset must be within ±18:00");
