@@ -11,7 +11,7 @@ packages=(
   assimp-testmodels libassimp-dev libcgal-demo
   clang-14 libclang-rt-14-dev clang-format-14
   libembree-dev python3-matplotlib
-  libproj-dev python3-gdal
+  libproj-dev python3-gdal python3-jsonschema
 )
 missing=()
 for p in "${packages[@]}"; do
