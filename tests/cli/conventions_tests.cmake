@@ -4,7 +4,7 @@
 # Parse errors name what is wrong and point to the verb's --help: an unknown
 # option is reported before CLI11's checks of required options and verbs.
 umbra_cli_test(no_verb_names_the_commands EXIT 2
-  STDERR "^umbra: a command is required; commands: render, validate, volume, merge, fuzz \\(see 'umbra --help'\\)\n$")
+  STDERR "^umbra: a command is required; commands: render, validate, volume, footprint, sunlight, merge, batch, fuzz \\(see 'umbra --help'\\)\n$")
 umbra_cli_test(unknown_top_option ARGS --bogus EXIT 2
   STDERR "^umbra: unknown option '--bogus' \\(see 'umbra --help'\\)\n$")
 umbra_cli_test(render_unknown_option ARGS render --bogus EXIT 2
