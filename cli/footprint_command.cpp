@@ -77,6 +77,11 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
                   "column per receiver polygon, front sunlit fractions)")
       ->check(non_empty_path())
       ->type_name("FILE.csv");
+  cmd->add_option("--shard", args.shard,
+                  "With --sun-times: only part I of N of the steps (consecutive steps, "
+                  "parts in order), for a cluster; the parts' --schedule and --csv files "
+                  "join into one run's with umbra merge (docs/sun.md)")
+      ->type_name("I/N");
   add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->footer(
       "Example:\n"
@@ -92,6 +97,8 @@ int run_footprint(const FootprintArgs& args) {
   if (!args.sun_times.empty()) return run_footprint_series(args);
   if (!args.schedule.empty())
     throw util::InputError("--schedule", "needs --sun-times (a schedule is a series of steps)");
+  if (!args.shard.empty())
+    throw util::InputError("--shard", "needs --sun-times (it splits a series' steps)");
   const auto start = util::Clock::now();
   const fs::path scene_path = args.scene;
   const fs::path output = args.output.empty()

@@ -22,6 +22,9 @@ struct FootprintArgs {
   /// START/END/STEP: the sun over a series of instants (docs/sun.md); empty: none.
   std::string sun_times;
   std::string schedule;  ///< with sun_times: EnergyPlus Schedule:File:Shading CSV; empty: none
+  /// With sun_times: "I/N", only part I of N of the steps (contiguous), for
+  /// a cluster; empty: every step.
+  std::string shard;
 };
 
 /// Adds the `footprint` subcommand to `app`, parsing into `args`.

@@ -1,6 +1,7 @@
 #include <cli/exit_codes.h>
 #include <cli/footprint_series.h>
 #include <cli/output_files.h>
+#include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
 #include <cli/stats_json.h>
 #include <geometry/export/footprint_geojson.h>
@@ -45,6 +46,10 @@ SeriesOutputs series_outputs(const FootprintArgs& args) {
                            "nothing to write: give -o FILE.ply (sun hours), -o FILE.geojson (every "
                            "step's regions), --csv FILE (every step's sunlit fractions) or "
                            "--schedule FILE.csv (EnergyPlus)");
+  if (!args.shard.empty() && !args.output.empty())
+    throw util::InputError("--shard",
+                           "sun hours (-o .ply) and GeoJSON (-o .geojson) need every step in one "
+                           "run; shard --schedule and --csv, which join with umbra merge");
   SeriesOutputs out;
   if (!args.output.empty()) {
     check_output_path(args.output, {".ply", ".geojson"});
@@ -89,6 +94,20 @@ int run_footprint_series(const FootprintArgs& args) {
   std::unique_ptr<geometry::SunFootprints> engine;
   try {
     series = geometry::sun_series(*scene.site, args.sun_times);
+    if (!args.shard.empty()) {
+      // Part I of N: steps [I·n/N, (I+1)·n/N), so that the parts in order
+      // are the series, row for row.
+      const Part part = parse_part("--shard", args.shard);
+      const std::uint64_t n = series.steps.size();
+      if (part.count > n)
+        throw util::InputError("--shard", fmt::format("{} parts of a series of {} steps; at most "
+                                                      "one part per step",
+                                                      part.count, n));
+      const auto first = static_cast<std::ptrdiff_t>(part.index * n / part.count);
+      const auto last = static_cast<std::ptrdiff_t>((part.index + 1) * n / part.count);
+      series.steps =
+          std::vector<geometry::SunStep>(series.steps.begin() + first, series.steps.begin() + last);
+    }
     engine = std::make_unique<geometry::SunFootprints>(scene, options);
     if (!args.schedule.empty()) columns = geometry::schedule_columns(scene, engine->receivers());
   } catch (const std::invalid_argument& e) {
@@ -181,6 +200,7 @@ int run_footprint_series(const FootprintArgs& args) {
     nlohmann::ordered_json j;
     j["scene"] = scene_path.string();
     j["sun_times"] = args.sun_times;
+    j["shard"] = args.shard.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(args.shard);
     j["steps"] = series.steps.size();
     j["daylight_steps"] = daylight;
     j["step_seconds"] = series.step_seconds;

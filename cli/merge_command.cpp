@@ -1,3 +1,4 @@
+#include <cli/csv_parts.h>
 #include <cli/exit_codes.h>
 #include <cli/memory_limit.h>
 #include <cli/merge_command.h>
@@ -18,11 +19,14 @@ namespace fs = std::filesystem;
 CLI::App* add_merge_command(CLI::App& app, MergeArgs& args) {
   CLI::App* cmd = app.add_subcommand(
       "merge", "Assemble the tiles of `umbra render --tile I/N` into the whole frame");
-  cmd->add_option("PART", args.parts, "Every tile of one render (.exr), in any order")
+  cmd->add_option("PART", args.parts,
+                  "Every tile of one render (.exr), in any order; or every part of a sharded "
+                  "sun series' --schedule or --csv table (.csv), in shard order")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
-                  "Output image: .exr (beauty and every AOV) or .png (beauty)")
+                  "Output: .exr (beauty and every AOV) or .png (beauty) for tiles; .csv for "
+                  "table parts")
       ->required()
       ->check(non_empty_path())
       ->type_name("OUT");
@@ -33,14 +37,15 @@ CLI::App* add_merge_command(CLI::App& app, MergeArgs& args) {
       "  umbra render scene.json --tile 0/2 -o t0.exr && umbra render scene.json --tile 1/2 -o "
       "t1.exr\n"
       "  umbra merge t0.exr t1.exr -o frame.exr\n"
-      "The result is byte-identical to `umbra render scene.json -o frame.exr`.");
+      "The result is byte-identical to `umbra render scene.json -o frame.exr`.\n"
+      "  umbra merge s0.csv s1.csv -o schedule.csv   (parts of footprint --sun-times --shard)");
   return cmd;
 }
 
 int run_merge(const MergeArgs& args) {
   const auto start = util::Clock::now();
   const fs::path output = args.output;
-  check_output_path(output, {".png", ".exr"});
+  check_output_path(output, {".png", ".exr", ".csv"});
   std::vector<NamedFile> inputs;
   std::vector<fs::path> parts;
   for (const std::string& part : args.parts) {
@@ -48,6 +53,13 @@ int run_merge(const MergeArgs& args) {
     parts.emplace_back(part);
   }
   check_outputs_distinct(inputs, {{output, "-o"}});
+  if (lowercase_extension(output) == ".csv") {
+    write_text_file(output, join_csv_parts(parts));
+    if (!args.quiet)
+      fmt::print("wrote {} (from {} parts, {:.2f} s)\n", output.string(), parts.size(),
+                 util::seconds_since(start));
+    return kExitSuccess;
+  }
   const std::optional<MemoryLimit> limit = memory_limit(args.memory_limit);
   const raster::Frame frame = raster::merge_frame_tiles(
       parts, limit ? limit->bytes : std::numeric_limits<std::uint64_t>::max());

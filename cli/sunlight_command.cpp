@@ -77,6 +77,8 @@ int run_sunlight(const SunlightArgs& args) {
     check_outputs_distinct({{args.scene, "the input scene"}}, {{args.json, "--json"}});
   }
   const geometry::Scene scene = geometry::load_scene(args.scene);
+  if (!args.json.empty() && args.json != "-")
+    check_outputs_distinct(scene_inputs(scene), {{args.json, "--json"}});
   if (!scene.site)
     throw util::InputError(args.scene, "sunlight needs the scene's \"site\" (docs/sun.md)");
   const std::string offset =

@@ -1,0 +1,70 @@
+#include <cli/csv_parts.h>
+#include <util/input_error.h>
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+#include <string_view>
+
+namespace umbra::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_part(const fs::path& part) {
+  std::error_code ec;
+  if (!fs::is_regular_file(part, ec))
+    throw util::InputError(part.string(), "not a regular file (a part to merge)");
+  std::ifstream in(part, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw util::InputError(part.string(), "cannot read");
+  return text;
+}
+
+}  // namespace
+
+std::string join_csv_parts(const std::vector<fs::path>& parts) {
+  std::string out, header, last_time;
+  bool timed = false;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::string text = read_part(parts[k]);
+    const std::size_t eol = text.find('\n');
+    if (eol == std::string::npos)
+      throw util::InputError(parts[k].string(), "no header line: not a part of a table");
+    const std::string_view first(text.data(), eol + 1);
+    if (k == 0) {
+      header = std::string(first);
+      timed = header.rfind("time,", 0) == 0;
+      out = header;
+    } else if (first != header) {
+      throw util::InputError(
+          parts[k].string(),
+          fmt::format("its header is not {}'s: parts of another table", parts[0].string()));
+    }
+    // A timed table's rows: times never go back, and each part starts after
+    // the previous one ended (ISO 8601 texts in one offset sort as text).
+    if (timed) {
+      bool part_start = true;
+      for (std::size_t pos = eol + 1; pos < text.size();) {
+        const std::size_t end = text.find('\n', pos);
+        const std::size_t comma = text.find(',', pos);
+        const std::string time = text.substr(pos, comma - pos);
+        if (part_start ? !last_time.empty() && time <= last_time : time < last_time)
+          throw util::InputError(parts[k].string(),
+                                 fmt::format("time {} is not after {}, the previous rows': give "
+                                             "the parts in shard order, each once",
+                                             time, last_time));
+        last_time = time;
+        part_start = false;
+        if (end == std::string::npos) break;
+        pos = end + 1;
+      }
+    }
+    out.append(text, eol + 1, std::string::npos);
+  }
+  return out;
+}
+
+}  // namespace umbra::cli
