@@ -183,7 +183,10 @@ TEST(FootprintGeoJson, PropertiesCarryTheRegionExactly) {
   }
   EXPECT_TRUE(tinted_shadow);
   scene.models[1].transmittance = {0, 0, 0};
-  for (const json& feature : geojson(scene, compute_footprints(scene))["features"])
+  // The document held in a variable: a range-for over a member of a
+  // temporary would outlive the temporary (ASan found it).
+  const json opaque = geojson(scene, compute_footprints(scene));
+  for (const json& feature : opaque["features"])
     EXPECT_FALSE(feature["properties"].contains("tau"));
 }
 
