@@ -4,6 +4,7 @@
 #include <geometry/export/mesh_text.h>
 #include <geometry/io/json_depth.h>
 #include <util/input_error.h>
+#include <util/input_file.h>
 #include <util/phase_clock.h>
 
 #include <fmt/format.h>
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -157,15 +157,9 @@ Job parse_job(const std::string& line_text, std::size_t line, const std::string&
 }
 
 std::vector<Job> read_manifest(const std::string& manifest) {
-  std::error_code ec;
-  const std::uintmax_t size = fs::file_size(manifest, ec);
-  if (ec) throw util::InputError(manifest, "cannot read: " + ec.message());
-  if (size > kMaxManifestBytes)
-    throw util::InputError(manifest, fmt::format("{} bytes, more than the {} a manifest may have",
-                                                 size, kMaxManifestBytes));
-  std::ifstream in(manifest, std::ios::binary);
-  if (!in) throw util::InputError(manifest, "cannot read");
+  const std::string text = util::read_input_file(manifest, "batch manifest", kMaxManifestBytes);
   std::vector<Job> jobs;
+  std::istringstream in(text);
   std::string line;
   std::size_t number = 0;
   while (std::getline(in, line)) {

@@ -1,35 +1,20 @@
 #include <cli/csv_parts.h>
 #include <util/input_error.h>
+#include <util/input_file.h>
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
 #include <string_view>
 
 namespace umbra::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string read_part(const fs::path& part) {
-  std::error_code ec;
-  if (!fs::is_regular_file(part, ec))
-    throw util::InputError(part.string(), "not a regular file (a part to merge)");
-  std::ifstream in(part, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw util::InputError(part.string(), "cannot read");
-  return text;
-}
-
-}  // namespace
-
 std::string join_csv_parts(const std::vector<fs::path>& parts) {
   std::string out, header, last_time;
   bool timed = false;
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const std::string text = read_part(parts[k]);
+    const std::string text = util::read_input_file(parts[k], "table part");
     const std::size_t eol = text.find('\n');
     if (eol == std::string::npos)
       throw util::InputError(parts[k].string(), "no header line: not a part of a table");

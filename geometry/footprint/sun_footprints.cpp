@@ -125,9 +125,8 @@ SunlightAreas sunlight_areas(const SunHours& sun_hours, double hours) {
 
 SunFootprints::SunFootprints(const Scene& scene, const FootprintOptions& options)
     : threads_(options.threads) {
-  Scene models_only = scene;
-  models_only.lights.clear();
-  tables_ = std::make_unique<FootprintTables>(models_only, receiving_models(scene, options), false,
+  // The scene's own lights are never used: every call sets its suns.
+  tables_ = std::make_unique<FootprintTables>(scene, receiving_models(scene, options), false,
                                               options.threads);
 }
 
@@ -136,6 +135,8 @@ SunFootprints::~SunFootprints() = default;
 std::span<const std::uint32_t> SunFootprints::receivers() const { return tables_->receivers; }
 
 Footprints SunFootprints::at(const Light& sun) {
+  // One sun alone keeps footprints_of's statistics, which at_each's split
+  // does not carry per sun.
   if (sun.dark) return {};
   tables_->scene.lights = {sun};
   const std::uint32_t only = 0;
