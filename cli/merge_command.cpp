@@ -61,12 +61,11 @@ int run_merge(const MergeArgs& args) {
     return kExitSuccess;
   }
   const std::optional<MemoryLimit> limit = memory_limit(args.memory_limit);
-  const raster::Frame frame = raster::merge_frame_tiles(
-      parts, limit ? limit->bytes : std::numeric_limits<std::uint64_t>::max());
-  raster::write_frame(frame, output);
+  const raster::MergedFrame frame = raster::merge_frame_tiles(
+      parts, output, limit ? limit->bytes : std::numeric_limits<std::uint64_t>::max());
   if (!args.quiet)
     fmt::print("wrote {} ({}x{} from {} tiles, {:.2f} s)\n", output.string(), frame.width,
-               frame.height, parts.size(), util::seconds_since(start));
+               frame.height, frame.tiles, util::seconds_since(start));
   return kExitSuccess;
 }
 

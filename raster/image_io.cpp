@@ -1,16 +1,14 @@
 #include <raster/exr_layout.h>
 #include <raster/image_codec.h>
 #include <raster/image_io.h>
+#include <raster/image_write.h>
 #include <raster/library_versions.h>
-#include <raster/shading.h>
-#include <util/atomic_files.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -26,75 +24,28 @@ using util::InputError;
 namespace fs = std::filesystem;
 using exr_layout::channel_names;
 using exr_layout::content_format;
-using exr_layout::kJobAttribute;
-using exr_layout::kTileAttribute;
 using exr_layout::last_pixel;
 using exr_layout::light_channel_index;
+using image_write::beauty_byte;
+using image_write::beauty_png_header;
+using image_write::exr_block_rows;
+using image_write::frame_exr_header;
+using image_write::ImageKind;
+using image_write::kind_of;
+using image_write::quantize;
+using image_write::rgb_header;
+using image_write::write_atomically;
 
 namespace {
-
-enum class ImageKind { png, exr };
-
-std::string lowercase(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-ImageKind kind_of(const fs::path& path) {
-  const std::string ext = lowercase(path.extension().string());
-  if (ext == ".png") return ImageKind::png;
-  if (ext == ".exr") return ImageKind::exr;
-  throw util::InputError(
-      path.string(),
-      fmt::format("unknown image extension '{}'; use .png or .exr", path.extension().string()));
-}
-
-/// Maps a value in [0, 1] to 0..255 by rounding to nearest; out-of-range
-/// values clamp and NaN maps to 0, so a bad pixel never becomes undefined
-/// behaviour in the conversion.
-std::uint8_t quantize(float v) {
-  if (!(v > 0.0f)) return 0;
-  if (v >= 1.0f) return 255;
-  return static_cast<std::uint8_t>(std::lround(v * 255.0f));
-}
-
-/// Encodes one image (image_codec.h: in memory, by the OpenImageIO module)
-/// in the format of `path`'s extension, then writes the bytes all or
-/// nothing (util/atomic_files.h: every write, fsync and close checked).
-/// OpenImageIO's PNG writer does not report a failed fwrite
-/// (PLATFORM-NOTES.md): on a full disk it wrote a truncated file and said it
-/// succeeded, so no image goes to a file through it.
-void write_atomically(const fs::path& path, const codec::Header& header, codec::Pixels pixels,
-                      int block_rows, const codec::FillRows& fill) {
-  const codec::Format format =
-      kind_of(path) == ImageKind::png ? codec::Format::png : codec::Format::openexr;
-  std::vector<unsigned char> encoded;
-  std::string error;
-  if (!codec::functions().encode(format, header, pixels, block_rows, fill, encoded, error))
-    throw util::InputError(path.string(), "cannot write image: " + error);
-  util::write_all_or_nothing(
-      path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
-}
-
-/// An 8-bit RGB image's header: no windows of its own.
-codec::Header rgb_header(int width, int height) {
-  codec::Header header;
-  header.width = header.full_width = width;
-  header.height = header.full_height = height;
-  header.channels = {"R", "G", "B"};
-  return header;
-}
 
 void write_beauty_png(const Frame& frame, const fs::path& path) {
   const std::size_t n = static_cast<std::size_t>(frame.width) * frame.height;
   std::vector<std::uint8_t> bytes(n * 3);
-  for (std::size_t k = 0; k < n * 3; ++k) bytes[k] = quantize(encode_srgb(frame.beauty[k]));
-  codec::Header header = rgb_header(frame.width, frame.height);
-  header.attributes = {{"oiio:ColorSpace", "sRGB"}};
-  write_atomically(path, header, codec::Pixels::uint8, 0, [&](int, int, void* out) {
-    std::copy(bytes.begin(), bytes.end(), static_cast<std::uint8_t*>(out));
-  });
+  for (std::size_t k = 0; k < n * 3; ++k) bytes[k] = beauty_byte(frame.beauty[k]);
+  write_atomically(path, beauty_png_header(frame.width, frame.height), codec::Pixels::uint8, 0,
+                   [&](int, int, void* out) {
+                     std::copy(bytes.begin(), bytes.end(), static_cast<std::uint8_t*>(out));
+                   });
 }
 
 /// Rows `rows` of `frame` as an EXR whose data window is those rows of the
@@ -106,29 +57,13 @@ void write_exr(const Frame& frame, const fs::path& path, RowRange rows,
   const std::size_t tau = frame.tinted ? 3 * lights : 0;  // transmittance.<i>.R/G/B
   const std::size_t channels = 3 + 2 * lights + tau + 1;
 
-  codec::Header header;
-  header.width = header.full_width = frame.width;
-  header.y = rows.begin;
-  header.height = rows.size();
-  header.full_height = frame.height;
-  // Our order; OpenEXR itself stores channels sorted by name, which is why
-  // read_shadow_channels looks them up by name.
-  header.channels = channel_names(lights, frame.soft, frame.tinted);
-  // No time stamp (DateTime empty): the same render gives the same bytes
-  // (OpenEXR writers otherwise record the current time).
-  header.attributes = {{"oiio:ColorSpace", "Linear"}, {"compression", "zip"}, {"DateTime", ""}};
-  if (tile) {
-    header.attributes.emplace_back(kTileAttribute, fmt::format("{}/{}", tile->index, tile->count));
-    header.attributes.emplace_back(kJobAttribute, tile->job);
-  }
-
+  const codec::Header header =
+      frame_exr_header(frame.width, frame.height, rows, lights, frame.soft, frame.tinted, tile);
   // The channels are interleaved a block of rows at a time: the whole
   // image at once would double the frame's memory (133 MB more at 16
-  // lights and 1280x720, each page of it first touched here). Blocks are
-  // whole 16-row zip blocks of OpenEXR, 64 rows, or 16 where that would
-  // pass 64 MB (a thousand lights' channels); the file is the same bytes.
+  // lights and 1280x720, each page of it first touched here).
   const std::size_t width = static_cast<std::size_t>(frame.width);
-  const int block_rows = width * channels * sizeof(float) * 64 > (std::size_t{64} << 20) ? 16 : 64;
+  const int block_rows = exr_block_rows(frame.width, channels);
   const bool whole = frame.windows.all_whole();
   write_atomically(
       path, header, codec::Pixels::float32, block_rows, [&](int y0, int y1, void* out) {
@@ -237,7 +172,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   // .exr used to be opened as a PNG and fail with "no shadow.0".
   const char* format = content_format(bytes);
   if (std::string_view(format) != "OpenEXR") {
-    const bool named_exr = lowercase(name.extension().string()) == ".exr";
+    const bool named_exr = image_write::lowercase_extension(name) == ".exr";
     throw util::InputError(
         where, fmt::format("is {} by its content{}; validate needs the shadow.0, shadow.1, ... "
                            "channels of an OpenEXR file from `umbra render -o NAME.exr`",

@@ -36,15 +36,24 @@ struct TileLabel {
 void write_frame_tile(const Frame& frame, RowRange rows, const TileLabel& tile,
                       const std::filesystem::path& path);
 
-/// The whole frame from its tiles (umbra merge), read back exactly: every
-/// tile of one render (one job, one count, each index once), each covering
+/// The frame's size and how many tiles made it (umbra merge's message).
+struct MergedFrame {
+  int width = 0, height = 0;
+  std::size_t tiles = 0;
+};
+
+/// Writes the whole frame from its tiles (umbra merge) to `output` by its
+/// extension, as write_frame would the single render's frame: byte-identical
+/// (`.exr` every channel, `.png` the beauty). The tiles are every tile of
+/// one render (one job, one count, each index once), each covering
 /// tile_rows(height, index, count) of one display window with the channels
-/// of write_frame's EXR. Any other file, a missing or repeated tile, or a
-/// frame whose buffers would exceed `max_bytes` is refused with an
-/// util::InputError naming the file and what does not fit, before the
-/// frame is allocated. Written by write_frame, the result is byte-identical
-/// to the EXR (or PNG) of the single render.
-Frame merge_frame_tiles(std::span<const std::filesystem::path> parts, std::uint64_t max_bytes);
+/// of write_frame's EXR, read back exactly; any other file, a missing or
+/// repeated tile is refused with an util::InputError naming the file.
+/// Streamed a block of rows at a time: merge holds the tiles' files, the
+/// encoded output and two blocks of rows, never the frame; more than
+/// `max_bytes` of that is refused before anything is written.
+MergedFrame merge_frame_tiles(std::span<const std::filesystem::path> parts,
+                              const std::filesystem::path& output, std::uint64_t max_bytes);
 
 /// The largest image read back: a render is at most 16384 x 16384 pixels.
 inline constexpr std::uint64_t kMaxImagePixels = 16384ull * 16384ull;

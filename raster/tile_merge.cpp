@@ -2,6 +2,7 @@
 #include <raster/exr_layout.h>
 #include <raster/image_codec.h>
 #include <raster/image_io.h>
+#include <raster/image_write.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
 
@@ -119,7 +120,9 @@ TilePart open_tile(const fs::path& path) {
 
 }  // namespace
 
-Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes) {
+MergedFrame merge_frame_tiles(std::span<const fs::path> paths, const fs::path& output,
+                              std::uint64_t max_bytes) {
+  const image_write::ImageKind kind = image_write::kind_of(output);
   if (paths.empty()) throw InputError("merge", "no tile given");
   std::vector<TilePart> parts;
   for (const fs::path& path : paths) parts.push_back(open_tile(path));
@@ -129,8 +132,8 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
                      fmt::format("is tile {} of {}, but {} tiles were given; umbra merge needs "
                                  "every tile of the render once",
                                  first.label.index, first.label.count, paths.size()));
-  std::vector<const TilePart*> by_index(first.label.count, nullptr);
-  for (const TilePart& part : parts) {
+  std::vector<TilePart*> by_index(first.label.count, nullptr);
+  for (TilePart& part : parts) {
     const auto differs = [&](const std::string& what) {
       throw InputError(part.path.string(),
                        fmt::format("is not a tile of the same render as {}: {} differs",
@@ -155,51 +158,89 @@ Frame merge_frame_tiles(std::span<const fs::path> paths, std::uint64_t max_bytes
                                    "every tile once)",
                                    k, first.label.count));
 
-  const std::uint64_t pixels = static_cast<std::uint64_t>(first.width) * first.height;
-  const std::uint64_t bytes =
-      pixels * (4 + (first.tinted ? 5 : 2) * static_cast<std::uint64_t>(first.lights)) * 4;
-  if (bytes > max_bytes)
-    throw InputError(first.path.string(),
-                     fmt::format("the merged {}x{} frame with {} lights needs ~{:.1f} GiB, limit "
-                                 "{:.1f} GiB (--memory-limit)",
-                                 first.width, first.height, first.lights,
-                                 static_cast<double>(bytes) / (1ull << 30),
-                                 static_cast<double>(max_bytes) / (1ull << 30)));
-  Frame frame(first.width, first.height, first.lights);
-  frame.soft = first.soft;
-  if (first.tinted) frame.enable_transmittance();
+  // The frame is never whole in memory: the encoder asks for a block of
+  // rows at a time and gets them from the tiles (in row order: tile I holds
+  // the rows before tile I+1's), so merge holds the tiles' files, the
+  // encoded output (about as large) and two blocks of rows.
   const std::size_t width = static_cast<std::size_t>(first.width);
-  const std::size_t lights = first.lights;
+  const std::size_t channels = first.destination.size();
+  const int block_rows = image_write::exr_block_rows(first.width, channels);
+  const std::uint64_t block_bytes = std::uint64_t{2} * block_rows * width * channels * 4;
+  std::uint64_t file_bytes = 0;
   for (TilePart& part : parts) {
-    const std::size_t channels = part.destination.size();
-    constexpr int kBlockRows = 64;
-    std::vector<float> block(kBlockRows * width * channels);
-    for (int y0 = part.rows.begin; y0 < part.rows.end; y0 += kBlockRows) {
-      const int y1 = std::min(part.rows.end, y0 + kBlockRows);
-      std::string error;
-      if (!part.in->read(y0, y1, 0, static_cast<int>(channels), block.data(), error))
-        throw InputError(part.path.string(), "cannot read image: " + error);
-      for (std::size_t k = 0; k < static_cast<std::size_t>(y1 - y0) * width; ++k) {
-        const std::size_t p = static_cast<std::size_t>(y0) * width + k;
-        for (std::size_t c = 0; c < channels; ++c) {
-          const float v = block[k * channels + c];
-          const auto d = static_cast<std::size_t>(part.destination[c]);
-          if (d < 3)
-            frame.beauty[p * 3 + d] = v;
-          else if (d < 3 + lights)
-            frame.shadow_values[frame.slot(d - 3, p)] = v;  // whole windows: always a slot
-          else if (d < 3 + 2 * lights)
-            frame.count_values[frame.slot(d - 3 - lights, p)] = v;
-          else if (first.tinted && d < 3 + 5 * lights)
-            frame.transmittance_values[3 * frame.slot((d - 3 - 2 * lights) / 3, p) +
-                                       (d - 3 - 2 * lights) % 3] = v;
-          else
-            frame.depth[p] = v;
-        }
-      }
-    }
+    file_bytes += part.bytes.size();
+    part.in.reset();  // opened again when its rows are wanted
   }
-  return frame;
+  if (2 * file_bytes + block_bytes > max_bytes)
+    throw InputError(
+        first.path.string(),
+        fmt::format("merging these {} tiles needs ~{:.1f} GiB (their files, the "
+                    "output and a block of rows), limit {:.1f} GiB (--memory-limit)",
+                    parts.size(), static_cast<double>(2 * file_bytes + block_bytes) / (1ull << 30),
+                    static_cast<double>(max_bytes) / (1ull << 30)));
+
+  std::vector<float> staging;  // one tile's share of a block, in the file's channel order
+  // Rows [y0, y1) of tile `part` into `staging`, channels [c0, c1) of its file.
+  const auto read_rows = [&](TilePart& part, int y0, int y1, int c0, int c1) {
+    staging.resize(static_cast<std::size_t>(y1 - y0) * width * static_cast<std::size_t>(c1 - c0));
+    std::string error;
+    if (!part.in) part.in = codec::functions().open_exr(part.bytes, part.path.string(), error);
+    if (!part.in || !part.in->read(y0, y1, c0, c1, staging.data(), error))
+      throw InputError(part.path.string(), "cannot read image: " + error);
+    // A reader holds OpenEXR's line buffers (~90 MB for a 3840-wide tile
+    // with 16 lights): closed once its last row is read, so at most two
+    // are open however many tiles there are.
+    if (y1 == part.rows.end) part.in.reset();
+  };
+  // Calls `copy(part, a, b)` for each tile's rows [a, b) within [y0, y1).
+  const auto each_tile_rows = [&](int y0, int y1, const auto& copy) {
+    for (TilePart* part : by_index) {
+      const int a = std::max(y0, part->rows.begin), b = std::min(y1, part->rows.end);
+      if (a < b) copy(*part, a, b);
+    }
+  };
+
+  if (kind == image_write::ImageKind::png) {
+    // The beauty only: R, G, B are the channels whose place is 0, 1, 2.
+    image_write::write_atomically(
+        output, image_write::beauty_png_header(first.width, first.height), codec::Pixels::uint8,
+        block_rows, [&](int y0, int y1, void* out) {
+          auto* const block = static_cast<std::uint8_t*>(out);
+          each_tile_rows(y0, y1, [&](TilePart& part, int a, int b) {
+            int file_channel[3] = {0, 0, 0};
+            for (std::size_t c = 0; c < channels; ++c)
+              if (part.destination[c] < 3) file_channel[part.destination[c]] = static_cast<int>(c);
+            const int c0 = *std::min_element(file_channel, file_channel + 3);
+            const int c1 = *std::max_element(file_channel, file_channel + 3) + 1;
+            read_rows(part, a, b, c0, c1);
+            const std::size_t n = static_cast<std::size_t>(b - a) * width;
+            std::uint8_t* const to = block + static_cast<std::size_t>(a - y0) * width * 3;
+            for (std::size_t k = 0; k < n; ++k)
+              for (int d = 0; d < 3; ++d)
+                to[k * 3 + static_cast<std::size_t>(d)] = image_write::beauty_byte(
+                    staging[k * static_cast<std::size_t>(c1 - c0) +
+                            static_cast<std::size_t>(file_channel[d] - c0)]);
+          });
+        });
+  } else {
+    const codec::Header header =
+        image_write::frame_exr_header(first.width, first.height, {0, first.height}, first.lights,
+                                      first.soft, first.tinted, nullptr);
+    image_write::write_atomically(
+        output, header, codec::Pixels::float32, block_rows, [&](int y0, int y1, void* out) {
+          float* const block = static_cast<float*>(out);
+          each_tile_rows(y0, y1, [&](TilePart& part, int a, int b) {
+            read_rows(part, a, b, 0, static_cast<int>(channels));
+            const std::size_t n = static_cast<std::size_t>(b - a) * width;
+            float* const to = block + static_cast<std::size_t>(a - y0) * width * channels;
+            for (std::size_t k = 0; k < n; ++k)
+              for (std::size_t c = 0; c < channels; ++c)
+                to[k * channels + static_cast<std::size_t>(part.destination[c])] =
+                    staging[k * channels + c];
+          });
+        });
+  }
+  return {first.width, first.height, parts.size()};
 }
 
 }  // namespace umbra::raster
