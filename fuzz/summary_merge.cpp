@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -251,7 +252,6 @@ void check_consistent(const Json& j, const std::string& file) {
   const auto refuse = [&](const std::string& what) { throw InputError(file, what); };
   if (u64(j, "failed") > u64(j, "scenes") || j["failures"].size() != u64(j, "failed"))
     refuse("\"failed\" is not the number of \"failures\", or more than \"scenes\"");
-  if (!j["index"].is_null() && shards != 1) refuse("a run of one --index has no shards");
   const Schema& schema = schema_of(verb, file);
   for (const RecordList& spec : schema.records)
     for (const Json& record : j[spec.key])
@@ -259,6 +259,7 @@ void check_consistent(const Json& j, const std::string& file) {
         refuse(fmt::format("{} holds {} {} of another shard than {}/{}", spec.key,
                            spec.order.front(), u64(record, spec.order.front()), shard, shards));
   if (verb == "check") {
+    if (!j["index"].is_null() && shards != 1) refuse("a check of one --index has no shards");
     const std::uint64_t scenes = !j["index"].is_null() ? 1
                                  : u64(j, "count") > shard
                                      ? (u64(j, "count") - 1 - shard) / shards + 1
@@ -369,7 +370,8 @@ void put_sample_counts(Json& j, const SampleCounts& n) {
 }
 
 Json parse_summary(std::string_view text, const std::string& file) {
-  // The summaries nest four levels (kinds.<kind>.lights); deeper is not one.
+  // A summary nests three levels (kinds.<kind>.lights, failures[r].lights);
+  // far deeper is not one, and is refused before it costs stack or memory.
   const Json::parser_callback_t depth_limit = [&](int depth, Json::parse_event_t, Json&) {
     if (depth > 8) throw InputError(file, "nested deeper than a fuzz summary is");
     return true;

@@ -72,7 +72,7 @@ std::string failure_line(const Json& f) {
 
 std::uint64_t u64(const Json& j, const char* key) { return j.at(key).get<std::uint64_t>(); }
 
-Json optional(const std::optional<std::uint64_t>& value) { return value ? Json(*value) : Json(); }
+Json or_null(const std::optional<std::uint64_t>& value) { return value ? Json(*value) : Json(); }
 
 }  // namespace
 
@@ -128,8 +128,8 @@ Json sweep_document(const RealSweepSummary& s, const RealSweepOptions& o) {
   for (const auto& root : o.roots) j["roots"].push_back(root.string());
   j["seed"] = o.seed;
   j["per_mesh"] = o.count || o.index ? Json() : Json(o.per_mesh);
-  j["count"] = optional(o.count);
-  j["index"] = optional(o.index);
+  j["count"] = or_null(o.count);
+  j["index"] = or_null(o.index);
   j["width"] = o.width;
   j["height"] = o.height;
   j["closure"] = o.closure;
