@@ -21,7 +21,7 @@ CLI::App* add_fuzz_real_command(CLI::App& fuzz, FuzzRealArgs& args) {
                   "/usr/share/assimp/models/{OBJ,PLY,OFF,STL} and build/cgal-data/data/meshes)")
       ->default_str("")
       ->type_name("DIR");
-  cmd->add_option("--seed", args.seed, "Seed of every mesh's scene sequence");
+  cmd->add_option("--seed", args.seed, "Seed of every mesh's scene sequence")->check(unsigned_64());
   CLI::Option* per_mesh =
       cmd->add_option("--per-mesh", args.per_mesh, "Scenes per mesh (default 3)")
           ->check(CLI::Range(1, 100000));
@@ -33,7 +33,9 @@ CLI::App* add_fuzz_real_command(CLI::App& fuzz, FuzzRealArgs& args) {
       ->type_name("I")
       ->excludes(per_mesh)
       ->excludes(count);
-  cmd->add_option("--shard", args.shard, "Only mesh files k with k mod N == I (sorted by path)")
+  cmd->add_option("--shard", args.shard,
+                  "Only mesh files k with k mod N == I (sorted by path; a part of one run: `umbra "
+                  "fuzz merge` joins the parts' summaries)")
       ->type_name("I/N");
   cmd->add_option("--width", args.width, "Image width")->check(CLI::Range(1, 4096));
   cmd->add_option("--height", args.height, "Image height")->check(CLI::Range(1, 4096));
@@ -49,6 +51,7 @@ CLI::App* add_fuzz_real_command(CLI::App& fuzz, FuzzRealArgs& args) {
       ->type_name("DIR");
   cmd->add_option("--export-limit", args.export_limit, "Failing scenes written at most (50)");
   cmd->add_flag("--json", args.json, "Print the summary as JSON on stdout instead of text");
+  add_summary_options(cmd, args.files, "--summary");
   cmd->add_flag("-q,--quiet", args.quiet, "Print no line per scene that passes");
   cmd->footer(
       "Example:\n  scripts/cgal-meshes.sh --all\n"
@@ -79,6 +82,7 @@ int run_fuzz_real(const FuzzRealArgs& args) {
   options.threads = args.threads;
   options.closure = args.closure;
   if (!args.export_dir.empty()) options.export_dir = args.export_dir;
+  check_summary_files(args.files, {});
   options.export_limit = args.export_limit;
   // Per-scene lines go to stderr under --json, so stdout holds the document alone.
   std::FILE* lines = args.json ? stderr : stdout;
@@ -89,8 +93,9 @@ int run_fuzz_real(const FuzzRealArgs& args) {
     }
   };
   const fuzz::RealSweepSummary summary = fuzz::run_real_sweep(options);
-  fmt::print("{}",
-             args.json ? fuzz::sweep_json(summary, options) : fuzz::sweep_text(summary, options));
+  const nlohmann::ordered_json document = fuzz::sweep_document(summary, options);
+  write_summary_files(args.files, document);
+  fmt::print("{}", args.json ? document.dump(2) + "\n" : fuzz::sweep_text(document));
   return summary.ok() ? kExitSuccess : kExitMismatches;
 }
 

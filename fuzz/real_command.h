@@ -2,6 +2,7 @@
 // `umbra fuzz real`: the truth sweep over real meshes (fuzz/real_sweep.h,
 // docs/fuzzing.md).
 #include <CLI/CLI.hpp>
+#include <fuzz/summary_files.h>
 
 #include <cstdint>
 #include <optional>
@@ -24,6 +25,7 @@ struct FuzzRealArgs {
   std::string export_dir;
   std::uint64_t export_limit = 50;
   bool json = false;
+  SummaryFiles files;  ///< --summary, --junit
   bool quiet = false;
 };
 

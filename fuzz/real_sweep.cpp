@@ -96,57 +96,63 @@ fs::path export_failure(const GeneratedScene& g, const RealSceneResult& r, const
   return root;
 }
 
+/// Scenes of one loaded mesh, file k of the `files` of the whole walk.
+void sweep_mesh(const RealSweepOptions& o, const geometry::Model& mesh, const MeshFile& file,
+                std::uint64_t k, std::uint64_t files, RealSweepSummary& s) {
+  const std::uint64_t n = scenes_for(o, k, files);
+  const std::uint64_t first = o.index.value_or(0);
+  s.mesh_scenes.push_back({k, file.path.string(), file.name, first, n});
+  for (std::uint64_t i = first; i - first < n; ++i) {
+    const GeneratedScene g = real_mesh_scene(mesh, file.name, o.seed, i, o.width, o.height);
+    RealSceneResult r;
+    r.name = g.name;
+    r.mesh_path = file.path;
+    r.file = k;
+    r.index = i;
+    r.features = g.features;
+    r.placements = g.placements;
+    r.recipe =
+        fmt::format("umbra fuzz real --meshes {} --seed {} --index {} --width {} --height {}",
+                    quoted(file.path), o.seed, i, o.width, o.height);
+    SceneCheckOptions check;
+    check.threads = o.threads;
+    check.closure = o.closure;
+    check.render = o.render;
+    r.check = check_scene(g.scene, check);
+    if (!r.check.ok() && o.export_dir && s.exported < o.export_limit) {
+      // A scene that cannot be written is still a finding: say so, go on.
+      try {
+        r.exported = export_failure(g, r, *o.export_dir);
+        ++s.exported;
+      } catch (const std::exception& e) {
+        r.export_error = e.what();
+      }
+    }
+    tally(r, s);
+    if (o.on_scene) o.on_scene(r);
+  }
+}
+
 }  // namespace
 
 RealSweepSummary run_real_sweep(const RealSweepOptions& o) {
   const auto start = util::Clock::now();
   RealSweepSummary s;
   const std::vector<MeshFile> all = find_mesh_files(o.roots);
-  std::vector<MeshFile> files;
-  for (std::size_t k = 0; k < all.size(); ++k)
-    if (k % o.shards == o.shard) files.push_back(all[k]);
-  s.files = files.size();
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    const MeshFile& file = files[k];
+  for (std::size_t k = o.shard; k < all.size(); k += o.shards) {
+    const MeshFile& file = all[k];
+    ++s.files;
     const auto load_start = util::Clock::now();
     std::string reason;
     const std::optional<geometry::Model> mesh = load_mesh(file, reason);
     s.seconds_load += util::seconds_since(load_start);
     if (!mesh) {
-      s.refused_meshes.emplace_back(file.path.string(), reason);
-      continue;
+      s.refused_meshes.push_back({k, file.path.string(), reason});
+    } else {
+      ++s.meshes;
+      sweep_mesh(o, *mesh, file, k, all.size(), s);
     }
-    ++s.meshes;
-    const std::uint64_t n = scenes_for(o, k, files.size());
-    const std::uint64_t first = o.index.value_or(0);
-    for (std::uint64_t i = first; i < first + n; ++i) {
-      const GeneratedScene g = real_mesh_scene(*mesh, file.name, o.seed, i, o.width, o.height);
-      RealSceneResult r;
-      r.name = g.name;
-      r.mesh_path = file.path;
-      r.index = i;
-      r.features = g.features;
-      r.placements = g.placements;
-      r.recipe =
-          fmt::format("umbra fuzz real --meshes {} --seed {} --index {} --width {} --height {}",
-                      quoted(file.path), o.seed, i, o.width, o.height);
-      SceneCheckOptions check;
-      check.threads = o.threads;
-      check.closure = o.closure;
-      check.render = o.render;
-      r.check = check_scene(g.scene, check);
-      if (!r.check.ok() && o.export_dir && s.exported < o.export_limit) {
-        // A scene that cannot be written is still a finding: say so, go on.
-        try {
-          r.exported = export_failure(g, r, *o.export_dir);
-          ++s.exported;
-        } catch (const std::exception& e) {
-          r.export_error = e.what();
-        }
-      }
-      tally(r, s);
-      if (o.on_scene) o.on_scene(r);
-    }
+    if (o.shards > all.size() - k) break;  // k + shards would wrap around
   }
   s.seconds = util::seconds_since(start);
   return s;

@@ -20,6 +20,7 @@ namespace umbra::fuzz {
 struct RealSceneResult {
   std::string name;  ///< "<mesh file>-s<seed>-<index>"
   std::filesystem::path mesh_path;
+  std::uint64_t file = 0;  ///< the mesh file's position in the whole walk (all shards)
   std::uint64_t index = 0;
   std::vector<std::string> features;
   std::vector<LightPlacement> placements;
@@ -34,7 +35,8 @@ struct RealSweepOptions {
   std::uint64_t seed = 1;
   std::uint64_t per_mesh = 3;
   /// Instead of per_mesh: this many scenes in all, spread over the files
-  /// found (file k of F gets count / F, one more while k < count mod F).
+  /// found (file k of F gets count / F, one more while k < count mod F; k
+  /// and F of the whole walk, so shards make the scenes one run makes).
   std::optional<std::uint64_t> count;
   std::optional<std::uint64_t> index;   ///< only scene `index` of each mesh
   std::uint64_t shard = 0, shards = 1;  ///< files whose position mod shards == shard
@@ -55,12 +57,25 @@ struct KindTally {
   std::uint64_t refusals = 0;
 };
 
+/// A file the loader refused: its position in the walk, path and one-line reason.
+struct SkippedMesh {
+  std::uint64_t file = 0;
+  std::string path, reason;
+};
+
+/// A mesh swept: its position in the walk, and scenes first .. first + scenes - 1.
+struct SweptMesh {
+  std::uint64_t file = 0;
+  std::string path, name;
+  std::uint64_t first = 0, scenes = 0;
+};
+
 struct RealSweepSummary {
   std::uint64_t files = 0, meshes = 0, scenes = 0, failed = 0, refused = 0;
   SampleCounts counts;
   std::uint64_t exported = 0;
-  /// Files the loader refused: path and its one-line reason.
-  std::vector<std::pair<std::string, std::string>> refused_meshes;
+  std::vector<SkippedMesh> refused_meshes;
+  std::vector<SweptMesh> mesh_scenes;
   std::map<std::string, KindTally> kinds;
   std::map<std::string, std::uint64_t> failing_features;  ///< scene features of failures
   std::vector<RealSceneResult> failures;

@@ -1,11 +1,13 @@
+#include <fuzz/summary_merge.h>
 #include <fuzz/sweep_report.h>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 namespace umbra::fuzz {
 
 namespace {
+
+using Json = nlohmann::ordered_json;
 
 std::string what_failed(const SceneCheck& c) {
   if (c.refused) return "refused: " + c.refusal;
@@ -38,52 +40,99 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
+Json failure_record(const RealSceneResult& r) {
+  Json f;
+  f["file"] = r.file;
+  f["name"] = r.name;
+  f["mesh"] = r.mesh_path.string();
+  f["index"] = r.index;
+  f["recipe"] = r.recipe;
+  f["what"] = what_failed(r.check);
+  f["refused"] = r.check.refused;
+  if (r.check.refused) f["refusal"] = r.check.refusal;
+  f["mismatches"] = r.check.counts.mismatches;
+  f["light_mismatches"] = r.check.light_mismatches;
+  f["lights"] = Json::array();
+  for (const auto& p : r.placements) f["lights"].push_back(describe(p));
+  f["features"] = r.features;
+  f["failing_lights"] = failing_lights(r);
+  if (!r.exported.empty()) f["exported"] = r.exported.string();
+  if (!r.export_error.empty()) f["export_error"] = r.export_error;
+  return f;
+}
+
+std::string failure_line(const Json& f) {
+  const auto text = [&](const char* key) { return f.at(key).get<std::string>(); };
+  return fmt::format("FAIL {} ({}): {}; [{}] {{{}}}{}{}\n", text("name"), text("recipe"),
+                     text("what"), joined(f.at("features").get<std::vector<std::string>>()),
+                     text("failing_lights"),
+                     f.contains("exported") ? "; exported to " + text("exported") : "",
+                     f.contains("export_error") ? "; export failed: " + text("export_error") : "");
+}
+
+std::uint64_t u64(const Json& j, const char* key) { return j.at(key).get<std::uint64_t>(); }
+
+Json or_null(const std::optional<std::uint64_t>& value) { return value ? Json(*value) : Json(); }
+
 }  // namespace
 
 std::string scene_line(const RealSceneResult& r) {
   const SceneCheck& c = r.check;
-  if (!c.ok())
-    return fmt::format("FAIL {} ({}): {}; [{}] {{{}}}{}{}\n", r.name, r.recipe, what_failed(c),
-                       joined(r.features), failing_lights(r),
-                       r.exported.empty() ? "" : "; exported to " + r.exported.string(),
-                       r.export_error.empty() ? "" : "; export failed: " + r.export_error);
+  if (!c.ok()) return failure_line(failure_record(r));
   return fmt::format(
       "ok   {}: {} boundary of {} samples, {} exact fallback pixels, {:.2f} s [{}]\n", r.name,
       c.counts.boundary, c.counts.compared, c.counts.exact_fallback_pixels, c.seconds,
       joined(r.features));
 }
 
-std::string sweep_text(const RealSweepSummary& s, const RealSweepOptions& o) {
-  const SampleCounts& n = s.counts;
+std::string sweep_text(const Json& j) {
+  const Json& shard = j.at("shard");
   std::string out = fmt::format(
       "fuzz real: {} scenes on {} meshes (seed {}, {}x{}, shard {}/{}), {} failed; {} refused; "
       "{} files, {} refused by the loader; {} pixels, {} samples, {} boundary, {} mismatches "
       "({} false lit, {} false shadowed, {} range); exact fallbacks: {} pixels, {} light "
       "recounts, {} eye-degenerate lights; {:.1f} s ({:.1f} s loading)\n",
-      s.scenes, s.meshes, o.seed, o.width, o.height, o.shard, o.shards, s.failed, s.refused,
-      s.files, s.refused_meshes.size(), n.pixels, n.compared, n.boundary, n.mismatches, n.false_lit,
-      n.false_shadowed, n.wrong_range, n.exact_fallback_pixels, n.exact_light_recounts,
-      n.eye_degenerate_lights, s.seconds, s.seconds_load);
+      u64(j, "scenes"), u64(j, "meshes"), u64(j, "seed"), u64(j, "width"), u64(j, "height"),
+      shard.at(0).get<std::uint64_t>(), shard.at(1).get<std::uint64_t>(), u64(j, "failed"),
+      u64(j, "refused"), u64(j, "files"), u64(j, "meshes_refused"), u64(j, "pixels"),
+      u64(j, "samples"), u64(j, "boundary"), u64(j, "mismatches"), u64(j, "false_lit"),
+      u64(j, "false_shadowed"), u64(j, "wrong_range"), u64(j, "exact_fallback_pixels"),
+      u64(j, "exact_light_recounts"), u64(j, "eye_degenerate_lights"),
+      j.at("seconds").get<double>(), j.at("seconds_load").get<double>());
   out += "light kinds (lights, failing, mismatches, refusals):";
-  for (const auto& [kind, k] : s.kinds)
-    out += fmt::format(" {} {}/{}/{}/{};", kind, k.lights, k.failing, k.mismatches, k.refusals);
+  for (const auto& [kind, k] : j.at("kinds").items())
+    out += fmt::format(" {} {}/{}/{}/{};", kind, u64(k, "lights"), u64(k, "failing"),
+                       u64(k, "mismatches"), u64(k, "refusals"));
   out += "\n";
-  if (!s.failing_features.empty()) {
+  if (!j.at("failing_features").empty()) {
     out += "features of failing scenes:";
-    for (const auto& [f, scenes] : s.failing_features) out += fmt::format(" {} {};", f, scenes);
+    for (const auto& [f, scenes] : j.at("failing_features").items())
+      out += fmt::format(" {} {};", f, scenes.get<std::uint64_t>());
     out += "\n";
   }
-  for (const auto& [path, reason] : s.refused_meshes)
-    out += fmt::format("skipped {}: {}\n", path, reason);
-  for (const RealSceneResult& r : s.failures) out += scene_line(r);
+  for (const Json& m : j.at("skipped_meshes"))
+    out += fmt::format("skipped {}: {}\n", m.at("path").get<std::string>(),
+                       m.at("reason").get<std::string>());
+  for (const Json& f : j.at("failures")) out += failure_line(f);
   return out;
 }
 
-std::string sweep_json(const RealSweepSummary& s, const RealSweepOptions& o) {
-  nlohmann::ordered_json j;
+std::string sweep_text(const RealSweepSummary& s, const RealSweepOptions& o) {
+  return sweep_text(sweep_document(s, o));
+}
+
+Json sweep_document(const RealSweepSummary& s, const RealSweepOptions& o) {
+  Json j;
+  j["verb"] = "real";
+  j["roots"] = Json::array();
+  for (const auto& root : o.roots) j["roots"].push_back(root.string());
   j["seed"] = o.seed;
+  j["per_mesh"] = o.count || o.index ? Json() : Json(o.per_mesh);
+  j["count"] = or_null(o.count);
+  j["index"] = or_null(o.index);
   j["width"] = o.width;
   j["height"] = o.height;
+  j["closure"] = o.closure;
   j["shard"] = {o.shard, o.shards};
   j["files"] = s.files;
   j["meshes"] = s.meshes;
@@ -91,49 +140,34 @@ std::string sweep_json(const RealSweepSummary& s, const RealSweepOptions& o) {
   j["scenes"] = s.scenes;
   j["failed"] = s.failed;
   j["refused"] = s.refused;
-  const SampleCounts& n = s.counts;
-  j["pixels"] = n.pixels;
-  j["samples"] = n.compared;
-  j["boundary"] = n.boundary;
-  j["mismatches"] = n.mismatches;
-  j["false_lit"] = n.false_lit;
-  j["false_shadowed"] = n.false_shadowed;
-  j["wrong_range"] = n.wrong_range;
-  j["exact_fallback_pixels"] = n.exact_fallback_pixels;
-  j["exact_light_recounts"] = n.exact_light_recounts;
-  j["eye_degenerate_lights"] = n.eye_degenerate_lights;
+  put_sample_counts(j, s.counts);
   j["exported"] = s.exported;
   j["seconds"] = s.seconds;
   j["seconds_load"] = s.seconds_load;
-  j["kinds"] = nlohmann::ordered_json::object();
+  j["kinds"] = Json::object();
   for (const auto& [kind, k] : s.kinds)
     j["kinds"][kind] = {{"lights", k.lights},
                         {"failing", k.failing},
                         {"mismatches", k.mismatches},
                         {"refusals", k.refusals}};
   j["failing_features"] = s.failing_features;
-  j["skipped_meshes"] = nlohmann::ordered_json::array();
-  for (const auto& [path, reason] : s.refused_meshes)
-    j["skipped_meshes"].push_back({{"path", path}, {"reason", reason}});
-  j["failures"] = nlohmann::ordered_json::array();
-  for (const RealSceneResult& r : s.failures) {
-    nlohmann::ordered_json f;
-    f["name"] = r.name;
-    f["mesh"] = r.mesh_path.string();
-    f["index"] = r.index;
-    f["recipe"] = r.recipe;
-    f["refused"] = r.check.refused;
-    if (r.check.refused) f["refusal"] = r.check.refusal;
-    f["mismatches"] = r.check.counts.mismatches;
-    f["light_mismatches"] = r.check.light_mismatches;
-    f["lights"] = nlohmann::ordered_json::array();
-    for (const auto& p : r.placements) f["lights"].push_back(describe(p));
-    f["features"] = r.features;
-    if (!r.exported.empty()) f["exported"] = r.exported.string();
-    if (!r.export_error.empty()) f["export_error"] = r.export_error;
-    j["failures"].push_back(f);
-  }
-  return j.dump(2) + "\n";
+  j["skipped_meshes"] = Json::array();
+  for (const SkippedMesh& m : s.refused_meshes)
+    j["skipped_meshes"].push_back({{"file", m.file}, {"path", m.path}, {"reason", m.reason}});
+  j["mesh_scenes"] = Json::array();
+  for (const SweptMesh& m : s.mesh_scenes)
+    j["mesh_scenes"].push_back({{"file", m.file},
+                                {"path", m.path},
+                                {"name", m.name},
+                                {"first", m.first},
+                                {"scenes", m.scenes}});
+  j["failures"] = Json::array();
+  for (const RealSceneResult& r : s.failures) j["failures"].push_back(failure_record(r));
+  return j;
+}
+
+std::string sweep_json(const RealSweepSummary& s, const RealSweepOptions& o) {
+  return sweep_document(s, o).dump(2) + "\n";
 }
 
 }  // namespace umbra::fuzz

@@ -21,7 +21,7 @@ umbra_cli_test(merge_error_points_to_merge_help ARGS merge EXIT 2
 umbra_cli_test(fuzz_unknown_option ARGS fuzz check --bogus EXIT 2
   STDERR "^umbra: unknown option '--bogus' \\(see 'umbra fuzz check --help'\\)\n$")
 umbra_cli_test(fuzz_unknown_command ARGS fuzz nope EXIT 2
-  STDERR "^umbra: unknown command 'nope'; commands: check, export, real \\(see 'umbra fuzz --help'\\)\n$")
+  STDERR "^umbra: unknown command 'nope'; commands: check, export, real, merge \\(see 'umbra fuzz --help'\\)\n$")
 
 # --help shows defaults, also those of options that stay unset unless given
 # (their defaults come from raster::ShadowMapOptions and RayOptions).

@@ -61,7 +61,7 @@ TEST(RealSweep, CountsMeshesScenesAndRefusals) {
   EXPECT_EQ(s.files, 3u);
   EXPECT_EQ(s.meshes, 2u);
   ASSERT_EQ(s.refused_meshes.size(), 1u);
-  EXPECT_NE(s.refused_meshes[0].first.find("bad.off"), std::string::npos);
+  EXPECT_NE(s.refused_meshes[0].path.find("bad.off"), std::string::npos);
   EXPECT_EQ(s.scenes, 4u);
   EXPECT_EQ(s.refused, 4u);
   EXPECT_EQ(s.failed, 4u);
