@@ -79,8 +79,8 @@ CLI::App* add_footprint_command(CLI::App& app, FootprintArgs& args) {
       ->type_name("FILE.csv");
   cmd->add_option("--shard", args.shard,
                   "With --sun-times: only part I of N of the steps (consecutive steps, "
-                  "parts in order), for a cluster; the parts' --schedule and --csv files "
-                  "join into one run's with umbra merge (docs/sun.md)")
+                  "parts in order), for a cluster; the parts' --schedule, --csv and -o .geojson "
+                  "files join into one run's with umbra merge (docs/scale.md)")
       ->type_name("I/N");
   add_verbosity_flags(cmd, args.verbose, args.quiet, "Print nothing on success");
   cmd->footer(

@@ -46,10 +46,11 @@ SeriesOutputs series_outputs(const FootprintArgs& args) {
                            "nothing to write: give -o FILE.ply (sun hours), -o FILE.geojson (every "
                            "step's regions), --csv FILE (every step's sunlit fractions) or "
                            "--schedule FILE.csv (EnergyPlus)");
-  if (!args.shard.empty() && !args.output.empty())
+  if (!args.shard.empty() && !args.output.empty() && lowercase_extension(args.output) != ".geojson")
     throw util::InputError("--shard",
-                           "sun hours (-o .ply) and GeoJSON (-o .geojson) need every step in one "
-                           "run; shard --schedule and --csv, which join with umbra merge");
+                           "sun hours (-o .ply) need every step in one run (the overlay of all "
+                           "steps' shadows); shard --schedule, --csv and -o .geojson, which join "
+                           "with umbra merge");
   SeriesOutputs out;
   if (!args.output.empty()) {
     check_output_path(args.output, {".ply", ".geojson"});

@@ -11,6 +11,7 @@
 #include <geometry/export/mesh_text.h>
 #include <util/input_error.h>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -66,6 +67,7 @@ GeoJsonCounts for_each_horizontal(const Scene& scene, const Site& site,
     }
   }
   counts.receivers_skipped = skipped.size();
+  counts.skipped.assign(skipped.begin(), skipped.end());
   return counts;
 }
 
@@ -214,7 +216,12 @@ std::string footprint_geojson(const Scene& scene, std::span<const GeoJsonStep> s
   out += R"(,"features":)" + std::to_string(counts.features);
   out += R"(,"regions_skipped":)" + std::to_string(counts.regions_skipped);
   out += R"(,"receivers_skipped":)" + std::to_string(counts.receivers_skipped);
-  out += R"(},"features":[)";
+  out += R"(,"skipped_receivers":[)";
+  for (std::size_t k = 0; k < counts.skipped.size(); ++k) {
+    const auto& [model, polygon, triangle] = counts.skipped[k];
+    out += fmt::format("{}[{},{},{}]", k ? "," : "", model, polygon, triangle);
+  }
+  out += R"(]},"features":[)";
   out += features;
   out += "\n]}\n";
   return out;

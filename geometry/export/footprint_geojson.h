@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace umbra::geometry {
 
@@ -25,6 +27,9 @@ struct GeoJsonCounts {
   std::uint64_t regions_skipped = 0;
   /// Those receivers: distinct (model, polygon, fan triangle).
   std::uint64_t receivers_skipped = 0;
+  /// Their (model, polygon, fan triangle), sorted: the file lists them, so
+  /// that `umbra merge` can count the distinct ones over sharded parts.
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::int32_t>> skipped;
 };
 
 /// A receiver piece (a planar polygon whole, triangle −1, or fan triangle

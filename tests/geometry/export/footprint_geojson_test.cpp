@@ -77,6 +77,15 @@ TEST(FootprintGeoJson, WritesTheRegionsOfHorizontalReceiversOnly) {
   EXPECT_EQ(counts.receivers_skipped, 2u);
   EXPECT_EQ(j["umbra"]["regions_skipped"], skipped);
   EXPECT_EQ(j["umbra"]["receivers_skipped"], 2);
+  // The skipped receivers themselves, sorted, as the counts hold them.
+  ASSERT_EQ(counts.skipped.size(), 2u);
+  ASSERT_EQ(j["umbra"]["skipped_receivers"].size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto& [model, polygon, triangle] = counts.skipped[k];
+    EXPECT_GE(model, 2u);  // not the ground (0) nor the canopy (1)
+    EXPECT_EQ(j["umbra"]["skipped_receivers"][k], json::array({model, polygon, triangle}));
+  }
+  EXPECT_LT(counts.skipped[0], counts.skipped[1]);
   EXPECT_EQ(j["umbra"]["site"]["latitude"], 51.5);
   const GeoJsonStep step{"", &f};
   const GeoJsonCounts again = footprint_geojson_counts(scene, std::span(&step, 1));
