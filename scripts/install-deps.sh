@@ -12,7 +12,7 @@ packages=(
   clang-14 libclang-rt-14-dev clang-format-14
   libembree-dev python3-matplotlib
   libproj-dev python3-gdal python3-jsonschema
-  slurmctld slurmd slurm-client munge iproute2 python3-distributed
+  slurmctld slurmd slurm-client munge iproute2 python3-distributed help2man
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -136,3 +136,23 @@ foreach(verb render volume validate footprint)
     SETUP scene.json r.exr
     EXIT 2 STDERR "^umbra: --(quiet excludes --verbose|verbose excludes --quiet) \\(see 'umbra ${verb} --help'\\)\n$")
 endforeach()
+
+# Bash completion against the real executable (cli/umbra-completion.bash).
+add_test(NAME cli.bash_completion
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/completion_test.sh
+    ${CMAKE_BINARY_DIR}/share/bash-completion/completions/umbra $<TARGET_FILE:umbra>
+    ${CMAKE_CURRENT_BINARY_DIR}/cli/completion)
+# The man pages help2man wrote at build time: one per verb, titled and named
+# for it, with the verb's options.
+if(UMBRA_HELP2MAN)
+  add_test(NAME cli.man_pages
+    COMMAND sh -c "set -e; d=${CMAKE_BINARY_DIR}/man
+      grep -q '^\\.TH UMBRA ' $d/umbra.1
+      grep -q '^\\.TH UMBRA-RENDER ' $d/umbra-render.1
+      grep -q '^umbra-render \\\\- Render a scene with its shadows' $d/umbra-render.1
+      grep -q 'map\\\\-resolution' $d/umbra-render.1
+      grep -q 'stats\\\\-json' $d/umbra-validate.1
+      grep -q '^umbra-fuzz \\\\- degenerate scenes' $d/umbra-fuzz.1
+      grep -q 'umbra-batch(1)' $d/umbra-merge.1
+      test $(ls $d/*.1 | wc -l) -eq 9")
+endif()
