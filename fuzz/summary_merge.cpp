@@ -234,10 +234,14 @@ void check_records(const Json& list, const RecordList& spec, const std::string& 
       if (it == record.end() ? f.required : !has_type(*it, f.type, kAny))
         throw InputError(file, fmt::format("{}.{} is not {}", where, f.key, type_name(f.type)));
     }
-    for (const auto& [key, value] : record.items())
+    // An item's key by name, not a structured binding: clang 14 cannot
+    // capture a binding in the lambda.
+    for (const auto& item : record.items()) {
+      const std::string& key = item.key();
       if (std::none_of(spec.fields.begin(), spec.fields.end(),
                        [&](const RecordField& f) { return key == f.key; }))
         throw InputError(file, fmt::format("{} has an unknown key \"{}\"", where, key));
+    }
   }
 }
 
