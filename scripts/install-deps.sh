@@ -13,6 +13,7 @@ packages=(
   libembree-dev python3-matplotlib
   libproj-dev python3-gdal python3-jsonschema
   slurmctld slurmd slurm-client munge iproute2 python3-distributed help2man
+  python3-dev python3-numpy pybind11-dev python3-pytest
 )
 missing=()
 for p in "${packages[@]}"; do

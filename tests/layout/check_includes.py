@@ -8,11 +8,13 @@ the project) and fails, naming the chain, when a rule is broken:
 - raster/ never reaches a CGAL or OpenMesh header (it gets plain values and
   exact decisions from geometry/), nor cli/, fuzz/, bench/;
 - the `umbra` executable's sources (cli/) never reach fuzz/ or bench/;
+- the Python module (python/) never reaches cli/, fuzz/ or bench/: like the
+  CLI, a thin layer over the libraries;
 - OpenImageIO is included by raster/image_codec_oiio.cpp alone (the module
   loaded on the first image read or written), Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
-  alone.
+  alone, pybind11 by python/ alone.
 Usage: check_includes.py SOURCE_DIR   (exit 0 clean, 1 with the violations)
 """
 import pathlib
@@ -20,7 +22,7 @@ import re
 import sys
 
 ROOT = pathlib.Path(sys.argv[1]).resolve()
-PROJECT = ("util", "geometry", "raster", "cli", "fuzz", "bench", "tests")
+PROJECT = ("util", "geometry", "raster", "cli", "fuzz", "bench", "tests", "python")
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
 
@@ -58,6 +60,8 @@ RULES = [
      "raster/ never includes cli/, fuzz/ or bench/"),
     ("cli", lambda inc: inc.split("/")[0] in ("fuzz", "bench"),
      "the umbra executable (cli/) never includes fuzz/ or bench/"),
+    ("python", lambda inc: inc.split("/")[0] in ("cli", "fuzz", "bench"),
+     "the Python module (python/) never includes cli/, fuzz/ or bench/"),
 ]
 ONLY_IN = [
     ("OpenImageIO/", ("raster/image_codec_oiio.cpp",)),
@@ -66,6 +70,7 @@ ONLY_IN = [
     ("simdjson.h", ("geometry/io/json_document.h",)),
     ("proj.h", ("geometry/export/geodetic_frame.cpp",)),
     ("proj/", ("geometry/export/geodetic_frame.cpp",)),
+    ("pybind11/", ("python/",)),
 ]
 
 violations = []
@@ -74,7 +79,7 @@ for folder, bad, rule in RULES:
         for inc, chain in reach(src).items():
             if bad(inc):
                 violations.append(f"{rule}: {' -> '.join(chain)}")
-for folder in ("util", "geometry", "raster", "cli"):
+for folder in ("util", "geometry", "raster", "cli", "python"):
     for src in sources(folder):
         rel = str(src.relative_to(ROOT))
         for inc in includes(src):
@@ -84,6 +89,6 @@ for folder in ("util", "geometry", "raster", "cli"):
 
 for v in violations:
     print(v)
-checked = sum(len(sources(f)) for f in ("util", "geometry", "raster", "cli"))
+checked = sum(len(sources(f)) for f in ("util", "geometry", "raster", "cli", "python"))
 print(f"check_includes: {checked} files, {len(violations)} violations")
 sys.exit(1 if violations else 0)
