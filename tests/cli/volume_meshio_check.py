@@ -9,7 +9,8 @@ binary PLY, parsed here independently of umbra and of meshio
 - the OBJ: the faces of each (light, type) as one cell set (meshio's
   `obj:group_ids`, the group's ordinal), the `g` lines naming them
   light<L>_near_cap|_side|_far_cap in light then type order, with the
-  group's face count and vertex counts;
+  group's face count and vertex counts, and every face's exact doubles
+  (the sidecar's `face` maps the OBJ's faces to the PLY's);
 - the binary PLY: meshio 7.0.0 cannot read it (its binary reader expects a
   face element's list for all faces before the other properties; umbra's
   faces carry properties after each list), the limit docs/volume-export.md
@@ -19,6 +20,7 @@ binary PLY, parsed here independently of umbra and of meshio
 Usage: volume_meshio_check.py BINARY.ply ASCII.ply OUT.obj   (exit 0 when all hold)
 """
 import collections
+import json
 import os
 import sys
 
@@ -64,7 +66,7 @@ def check_ascii_ply(path, vertices, faces, failures):
         failures.append("ascii PLY: `face` is not each export index once")
 
 
-def check_obj(path, faces, failures):
+def check_obj(path, vertices, faces, failures):
     # Expected groups from the binary PLY's own face properties.
     want = collections.OrderedDict()
     for key in sorted({(f["light"], f["type"]) for f in faces}):
@@ -84,6 +86,16 @@ def check_obj(path, faces, failures):
     for block, ids in zip(mesh.cells, mesh.cell_data["obj:group_ids"]):
         for cell, gid in zip(block.data, ids):
             got[int(gid)][len(cell)] += 1
+    # Cells come in the file's face order; the sidecar's `face` names each
+    # one's export index, whose vertices the binary PLY holds.
+    with open(path + ".json") as sidecar:
+        export_index = json.load(sidecar)["attributes"]["face"]
+    cells = flatten(block.data for block in mesh.cells)
+    for i, cell in enumerate(cells):
+        got_points = [tuple(float(c) for c in mesh.points[v]) for v in cell]
+        if got_points != [vertices[v] for v in faces[export_index[i]]["vertex_indices"]]:
+            failures.append("OBJ cell %d (face %d): vertices differ" % (i, export_index[i]))
+            break
     for gid, (key, sizes) in enumerate(want.items()):
         if got.get(gid) != sizes:
             failures.append("OBJ group %d (%s): meshio has faces by vertex count %s, want %s" %
@@ -109,7 +121,7 @@ def main():
     vertices, faces = read_ply(binary)
     failures = []
     check_ascii_ply(ascii_ply, vertices, faces, failures)
-    groups = check_obj(obj, faces, failures)
+    groups = check_obj(obj, vertices, faces, failures)
     binary_outcome = check_binary_ply(binary, failures)
     for line in failures[:10]:
         print("volume_meshio_check:", line)
