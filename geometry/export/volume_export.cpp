@@ -1,4 +1,5 @@
-// Shadow volumes to PLY / OBJ+JSON / OFF+JSON (docs/volume-export.md).
+// Shadow volumes to PLY (binary or ASCII) / OBJ+JSON+MTL / OFF+JSON / glTF
+// (docs/volume-export.md).
 //
 // Why umbra writes the PLY bytes itself: OpenMesh 9.0's PLY writer always
 // declares and writes the vertex position as `float x, y, z`, even for a mesh
