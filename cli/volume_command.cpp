@@ -6,6 +6,7 @@
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
 #include <geometry/export/volume_export.h>
+#include <geometry/io/mesh_lexer.h>
 #include <geometry/volumes/builder.h>
 #include <raster/memory_estimate.h>
 #include <util/input_error.h>
@@ -41,11 +42,18 @@ CLI::App* add_volume_command(CLI::App& app, VolumeArgs& args) {
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args.output,
                   "Output mesh: .ply (attributes as face properties), .obj/.off (attributes "
-                  "in the sidecar OUT.json) or .gltf/.glb (float32 positions; attributes as "
-                  "per-vertex _FACE, _LIGHT, ... on each face's own vertices); default "
+                  "in the sidecar OUT.json; .obj grouped by light and type with materials in "
+                  "<stem>.mtl) or .gltf/.glb (float32 positions; a node and material per light "
+                  "and type; attributes as per-vertex _FACE, _LIGHT, ...); default "
                   "<scene stem>.ply in the current directory")
       ->check(non_empty_path())
       ->type_name("OUT");
+  cmd->add_option("--ply-format", args.ply_format,
+                  "binary (default) or ascii: how a .ply output stores its elements; both "
+                  "exact (ascii: shortest round-trip decimals), ascii for readers such as "
+                  "meshio that cannot read the binary one")
+      ->transform(CLI::IsMember({"binary", "ascii"}, CLI::ignore_case))
+      ->type_name("FORMAT");
   cmd->add_option("--stats-json", args.stats_json,
                   "Write counts per light and timings as JSON to FILE ('-' = stdout)")
       ->check(non_empty_path())
@@ -77,11 +85,22 @@ int run_volume(const VolumeArgs& args) {
 
   // Cheap checks first: nothing is built for an output that cannot be written.
   check_output_path(output, {".ply", ".obj", ".off", ".gltf", ".glb"});
+  geometry::VolumeFileOptions options;
+  if (!args.ply_format.empty()) {
+    if (geometry::detail::to_lower(output.extension().string()) != ".ply")
+      throw util::InputError("--ply-format", "applies to a .ply output only");
+    if (args.ply_format == "ascii") options.ply = geometry::PlyEncoding::ascii;
+  }
   std::vector<NamedFile> outputs = {{output, args.output.empty() ? "the default output" : "-o"}};
   const auto sidecar = geometry::volume_sidecar_path(output);
   if (sidecar) {
     check_output_path(*sidecar, {});
     outputs.push_back({*sidecar, "the sidecar of -o"});
+  }
+  const auto materials = geometry::volume_material_path(output);
+  if (materials) {
+    check_output_path(*materials, {});
+    outputs.push_back({*materials, "the materials of -o"});
   }
   if (!args.stats_json.empty() && !stats_to_stdout) {
     check_output_path(args.stats_json, {});
@@ -104,7 +123,7 @@ int run_volume(const VolumeArgs& args) {
   timings.volumes = util::seconds_since(phase);
 
   phase = std::chrono::steady_clock::now();
-  geometry::write_volumes(volumes, output);
+  geometry::write_volumes(volumes, output, options);
   timings.write = util::seconds_since(phase);
   timings.total = util::seconds_since(start);
 
@@ -132,10 +151,12 @@ int run_volume(const VolumeArgs& args) {
   if (!args.quiet) {
     // With the statistics on stdout, keep stdout pure JSON.
     std::FILE* stream = stats_to_stdout ? stderr : stdout;
-    fmt::print(stream, "wrote {}{}: {} faces (type 1: {}, type 2: {}, type 3: {}; {}), {:.2f} s\n",
+    fmt::print(stream,
+               "wrote {}{}{}: {} faces (type 1: {}, type 2: {}, type 3: {}; {}), {:.2f} s\n",
                output.string(), sidecar ? " + " + sidecar->filename().string() : std::string(),
-               counts.all.total, counts.all.type[0], counts.all.type[1], counts.all.type[2],
-               faces_per_light(counts), timings.total);
+               materials ? " + " + materials->filename().string() : std::string(), counts.all.total,
+               counts.all.type[0], counts.all.type[1], counts.all.type[2], faces_per_light(counts),
+               timings.total);
   }
   return kExitSuccess;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// `umbra volume SCENE -o OUT.ply|.obj|.off [--stats-json FILE] [--quiet]`
+// `umbra volume SCENE -o OUT.ply|.obj|.off|.gltf|.glb [--ply-format binary|ascii]
+//  [--stats-json FILE] [--quiet]`
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -8,7 +9,8 @@ namespace umbra::cli {
 
 struct VolumeArgs {
   std::string scene;
-  std::string output;        ///< .ply, .obj or .off (checked before any work)
+  std::string output;        ///< .ply, .obj, .off, .gltf or .glb (checked before any work)
+  std::string ply_format;    ///< --ply-format: "binary" or "ascii"; empty: binary
   std::string stats_json;    ///< empty: none; "-": stdout
   std::string memory_limit;  ///< --memory-limit SIZE; empty: the machine's (memory_limit.h)
   bool quiet = false;

@@ -7,13 +7,13 @@
 #include <geometry/export/footprint_gltf.h>
 #include <geometry/export/indexed_faces.h>
 #include <geometry/export/mesh_text.h>
+#include <geometry/export/obj_materials.h>
 #include <geometry/io/mesh_lexer.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -80,49 +80,25 @@ std::string grouped_obj_text(const Footprints& f, const fs::path& mtl) {
       order.size(),
       [&](std::size_t i) { return std::span<const Vec3>(f.regions[order[i]].vertices); },
       "write_footprints: region");
-  std::string out = "# umbra shadow footprints: " + std::to_string(indexed.faces.size()) +
-                    " regions, one face per region, grouped by light and class\n"
-                    "mtllib " +
-                    mtl.filename().string() + "\n";
-  for (const Vec3& v : indexed.vertices) {
-    out += "v ";
-    append_double(out, v.x);
-    out += ' ';
-    append_double(out, v.y);
-    out += ' ';
-    append_double(out, v.z);
-    out += '\n';
-  }
-  std::string current;
-  for (std::size_t i = 0; i < indexed.faces.size(); ++i) {
-    const FootprintRegion& r = f.regions[order[i]];
-    const std::string group = detail::footprint_group_name(r.light, is_lit(r));
-    if (group != current) {
-      out += "g " + group + "\nusemtl " + group + "\n";
-      current = group;
-    }
-    out += 'f';
-    for (const std::uint32_t v : indexed.faces[i])
-      out += ' ' + std::to_string(std::uint64_t{v} + 1);
-    out += '\n';
-  }
-  return out;
+  ObjGroups groups{mtl.filename().string(), {}};
+  for (const std::size_t i : order)
+    groups.names.push_back(detail::footprint_group_name(f.regions[i].light, is_lit(f.regions[i])));
+  return obj_text(indexed,
+                  "umbra shadow footprints: " + std::to_string(indexed.faces.size()) +
+                      " regions, one face per region, grouped by light and class",
+                  &groups);
 }
 
 /// One material per (light, class) present in `f`, in the OBJ's order.
-std::string mtl_text(const Footprints& f) {
-  std::string out = "# umbra shadow footprints: lit warm white, shadowed dark blue\n";
-  std::string previous;
+std::string footprint_mtl_text(const Footprints& f) {
+  std::vector<ObjMaterial> materials;
   for (const std::size_t i : obj_order(f)) {
     const FootprintRegion& r = f.regions[i];
     const std::string name = detail::footprint_group_name(r.light, is_lit(r));
-    if (name == previous) continue;
-    previous = name;
-    out += "\nnewmtl " + name + "\n";
-    out += is_lit(r) ? "Kd 1 0.9 0.7\n" : "Kd 0.1 0.15 0.4\n";
-    out += "Ka 0 0 0\nKs 0 0 0\nd 1\nillum 1\n";
+    if (!materials.empty() && materials.back().name == name) continue;
+    materials.push_back({name, is_lit(r) ? "1 0.9 0.7" : "0.1 0.15 0.4"});
   }
-  return out;
+  return mtl_text("umbra shadow footprints: lit warm white, shadowed dark blue", materials);
 }
 
 }  // namespace
@@ -153,14 +129,7 @@ std::optional<fs::path> footprint_sidecar_path(const fs::path& path) {
   const std::string ext = detail::to_lower(path.extension().string());
   if (ext == ".ply" || ext == ".csv" || ext == ".gltf" || ext == ".glb" || ext == ".geojson")
     return std::nullopt;
-  if (ext == ".obj") {
-    const std::string name = path.filename().string();
-    if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c) != 0; }))
-      throw util::InputError(path.string(),
-                             "an .obj footprint name cannot hold whitespace: its mtllib line "
-                             "names the .mtl sidecar");
-    return fs::path(path).replace_extension(".mtl");
-  }
+  if (ext == ".obj") return obj_material_path(path, "footprint");
   throw util::InputError(path.string(), "unknown footprint extension '" +
                                             path.extension().string() +
                                             "'; use .ply, .obj, .gltf, .glb, .csv or .geojson");
@@ -176,7 +145,7 @@ std::vector<std::pair<fs::path, std::string>> footprint_files(const Footprints& 
   } else if (ext == ".obj") {
     const fs::path mtl = *footprint_sidecar_path(path);
     files.emplace_back(path, grouped_obj_text(footprints, mtl));
-    files.emplace_back(mtl, mtl_text(footprints));
+    files.emplace_back(mtl, footprint_mtl_text(footprints));
   } else if (ext == ".gltf" || ext == ".glb") {
     files.emplace_back(path,
                        detail::gltf_footprint_bytes(footprints, ext == ".glb", path.string()));

@@ -5,15 +5,17 @@
 // attributes start with '_' and must not be UNSIGNED_INT). So every face gets
 // its own vertices (faces share none), each vertex carries its face's
 // attributes as FLOAT scalars (integers up to 2^24 are exact in a float), and
-// the face is fan-triangulated on them. Any glTF reader that exposes custom
-// attributes (tinygltf, three.js, Blender) gets them per triangle; readers
-// that drop them (assimp 5.2) still get the triangles and the node extras.
+// the face is fan-triangulated on them. Readers that expose custom attributes
+// (tinygltf) get them per triangle; the importers most tools use drop them
+// (assimp 5.2, tested; Blender 3.4, as issue 24 reports), so the light and
+// face type are also the structure, as in footprint_gltf.cpp: a node, mesh
+// and named material per (light, type) (volume_groups.h).
 #include <geometry/export/gltf_buffer.h>
 #include <geometry/export/gltf_writer.h>
+#include <geometry/export/volume_groups.h>
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -33,13 +35,11 @@ class GltfWriter {
  public:
   explicit GltfWriter(const std::string& name) : name_(name) {}
 
-  /// One light's faces (indices into volumes.polygons) as a node + mesh.
-  void add_light(const ShadowVolumes& volumes, std::uint32_t light,
-                 const std::vector<std::size_t>& faces) {
+  /// One (light, type) group's faces as a node, mesh and material.
+  void add_group(const ShadowVolumes& volumes, const VolumeGroup& group) {
     GltfFaceVertices vertices({kAttributes.begin(), kAttributes.end()}, name_, "face");
     std::vector<std::uint32_t> indices;
-    std::size_t triangles = 0;
-    for (const std::size_t f : faces) {
+    for (const std::size_t f : group.faces) {
       const ShadowPolygon& p = volumes.polygons[f];
       const std::uint32_t base = vertices.add_face(
           f, p.vertices,
@@ -47,24 +47,28 @@ class GltfWriter {
            static_cast<double>(p.polygon), static_cast<double>(p.edge), static_cast<double>(p.type),
            static_cast<double>(p.nb_c), p.twisted ? 1.0 : 0.0});
       // Fan: triangle k of an n-gon is (v0, v(k+1), v(k+2)), k = 0..n-3.
-      for (std::uint32_t k = 0; k + 2 < p.vertices.size(); ++k) {
+      for (std::uint32_t k = 0; k + 2 < p.vertices.size(); ++k)
         indices.insert(indices.end(), {base, base + k + 1, base + k + 2});
-        ++triangles;
-      }
     }
-    Json prim = {{"mode", 4}};
+    Json prim = {{"mode", 4}, {"material", materials_.size()}};
     vertices.write(buffer_, prim["attributes"]);
     prim["indices"] = buffer_.accessor(buffer_.indices_view(indices), kGltfUnsignedInt,
                                        indices.size(), "SCALAR", Json(), Json());
-    const std::size_t mesh = meshes_.size();
-    meshes_.push_back({{"name", "umbra shadow volume, light " + std::to_string(light)},
-                       {"primitives", Json::array({prim})}});
-    nodes_.push_back({{"name", "umbra shadow volume, light " + std::to_string(light)},
-                      {"mesh", mesh},
+    const std::string name = volume_group_name(group.light, group.type);
+    materials_.push_back({{"name", name},
+                          {"doubleSided", true},
+                          {"pbrMetallicRoughness",
+                           {{"baseColorFactor", volume_group_colour(group.type).linear},
+                            {"metallicFactor", 0.0},
+                            {"roughnessFactor", 1.0}}}});
+    meshes_.push_back({{"name", name}, {"primitives", Json::array({prim})}});
+    nodes_.push_back({{"name", name},
+                      {"mesh", meshes_.size() - 1},
                       {"extras",
-                       {{"umbra_light", light},
-                        {"umbra_faces", faces.size()},
-                        {"umbra_triangles", triangles}}}});
+                       {{"umbra_light", group.light},
+                        {"umbra_type", static_cast<int>(group.type)},
+                        {"umbra_faces", group.faces.size()},
+                        {"umbra_triangles", indices.size() / 3}}}});
   }
 
   std::string bytes(bool binary, std::size_t total_faces) {
@@ -73,12 +77,14 @@ class GltfWriter {
     doc["extras"] = {
         {"umbra",
          {{"format", "umbra shadow volumes"},
-          {"version", 1},
+          {"version", 2},
           {"faces", total_faces},
           {"attributes", kAttributes},
           {"layout",
-           "one node, mesh and triangle primitive per light with faces; each face has its own "
-           "consecutive vertices, in the face's order, fan-triangulated (triangle k is v0, "
+           "one node, mesh, triangle primitive and material per (light, type) with faces, named "
+           "light<L>_near_cap, light<L>_side or light<L>_far_cap (types 1, 2, 3), lights in "
+           "order, then types; each face has its own consecutive vertices, in the face's order, "
+           "fan-triangulated (triangle k is v0, "
            "v(k+1), v(k+2)); every vertex carries its face's attributes as float scalars; _FACE "
            "is the face's index in the export; positions are float32 (the PLY export is exact)"},
           {"nb_c_convention",
@@ -93,13 +99,17 @@ class GltfWriter {
     doc["scene"] = 0;
     doc["scenes"] = Json::array({{{"nodes", roots}}});
     doc["nodes"] = nodes_;
-    if (!meshes_.empty()) doc["meshes"] = meshes_;
+    if (!meshes_.empty()) {
+      doc["meshes"] = meshes_;
+      doc["materials"] = materials_;
+    }
     return buffer_.finish(std::move(doc), binary, name_, "the volume");
   }
 
  private:
   std::string name_;
   GltfBuffer buffer_;
+  Json materials_ = Json::array();
   Json meshes_ = Json::array();
   Json nodes_ = Json::array();
 };
@@ -107,14 +117,8 @@ class GltfWriter {
 }  // namespace
 
 std::string gltf_volume_bytes(const ShadowVolumes& volumes, bool binary, const std::string& name) {
-  std::uint32_t lights = static_cast<std::uint32_t>(volumes.stats.size());
-  for (const ShadowPolygon& p : volumes.polygons) lights = std::max(lights, p.light + 1);
-  std::vector<std::vector<std::size_t>> faces(lights);
-  for (std::size_t i = 0; i < volumes.polygons.size(); ++i)
-    faces[volumes.polygons[i].light].push_back(i);
   GltfWriter writer(name);
-  for (std::uint32_t l = 0; l < lights; ++l)
-    if (!faces[l].empty()) writer.add_light(volumes, l, faces[l]);
+  for (const VolumeGroup& group : volume_groups(volumes)) writer.add_group(volumes, group);
   return writer.bytes(binary, volumes.polygons.size());
 }
 

@@ -8,8 +8,9 @@
 namespace umbra::geometry::detail {
 
 /// The bytes of a `.glb` (binary) or `.gltf` (buffer embedded as a base64
-/// data URI) file holding every face of `volumes`: one node, mesh and
-/// triangle primitive per light that has faces; each face fan-triangulated
+/// data URI) file holding every face of `volumes`: one node, mesh, triangle
+/// primitive and material per (light, type) with faces, all named by
+/// volume_group_name, in volume_groups order; each face fan-triangulated
 /// on its own vertices, which carry the face's attributes as float custom
 /// attributes (_FACE, _LIGHT, _MODEL, _POLYGON, _EDGE, _TYPE, _NB_C,
 /// _TWISTED). Throws InputError naming `name` when a coordinate does not

@@ -48,16 +48,16 @@ void append_double(std::string& out, double value) {
 }
 
 std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> comments,
-                      std::span<const FaceAttribute> attributes, std::span<const FaceReal> reals) {
+                      std::span<const FaceAttribute> attributes, std::span<const FaceReal> reals,
+                      PlyEncoding encoding) {
   std::size_t largest = 0;
   for (const auto& face : indexed.faces) largest = std::max(largest, face.size());
   // uchar counts are what most PLY readers expect; a face with more vertices
   // than that needs a wider count, which the PLY format allows.
   const bool wide_count = largest > std::numeric_limits<std::uint8_t>::max();
+  const bool ascii = encoding == PlyEncoding::ascii;
 
-  std::string out =
-      "ply\n"
-      "format binary_little_endian 1.0\n";
+  std::string out = ascii ? "ply\nformat ascii 1.0\n" : "ply\nformat binary_little_endian 1.0\n";
   for (const std::string& comment : comments) out += "comment " + comment + "\n";
   out += "element vertex " + std::to_string(indexed.vertices.size()) +
          "\n"
@@ -72,6 +72,24 @@ std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> 
   for (const FaceReal& r : reals) out += "property double " + r.name + "\n";
   out += "end_header\n";
 
+  if (ascii) {
+    // One element a line, values separated by one space.
+    for (const Vec3& v : indexed.vertices) {
+      append_position(out, v);
+      out += '\n';
+    }
+    for (std::size_t i = 0; i < indexed.faces.size(); ++i) {
+      out += std::to_string(indexed.faces[i].size());
+      for (const std::uint32_t v : indexed.faces[i]) out += ' ' + std::to_string(index_as_int32(v));
+      for (const FaceAttribute& a : attributes) out += ' ' + std::to_string(a.values[i]);
+      for (const FaceReal& r : reals) {
+        out += ' ';
+        append_double(out, r.values[i]);
+      }
+      out += '\n';
+    }
+    return out;
+  }
   for (const Vec3& v : indexed.vertices) {
     append_le(out, v.x);
     append_le(out, v.y);
@@ -90,16 +108,21 @@ std::string ply_bytes(const IndexedFaces& indexed, std::span<const std::string> 
   return out;
 }
 
-std::string obj_text(const IndexedFaces& indexed, const std::string& comment) {
+std::string obj_text(const IndexedFaces& indexed, const std::string& comment,
+                     const ObjGroups* groups) {
   std::string out = "# " + comment + "\n";
+  if (groups) out += "mtllib " + groups->mtllib + "\n";
   for (const Vec3& v : indexed.vertices) {
     out += "v ";
     append_position(out, v);
     out += '\n';
   }
-  for (const auto& face : indexed.faces) {
+  for (std::size_t i = 0; i < indexed.faces.size(); ++i) {
+    if (groups && (i == 0 || groups->names[i] != groups->names[i - 1]))
+      out += "g " + groups->names[i] + "\nusemtl " + groups->names[i] + "\n";
     out += 'f';
-    for (const std::uint32_t v : face) out += ' ' + std::to_string(std::uint64_t{v} + 1);
+    for (const std::uint32_t v : indexed.faces[i])
+      out += ' ' + std::to_string(std::uint64_t{v} + 1);
     out += '\n';
   }
   return out;

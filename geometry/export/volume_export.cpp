@@ -1,4 +1,5 @@
-// Shadow volumes to PLY / OBJ+JSON / OFF+JSON (docs/volume-export.md).
+// Shadow volumes to PLY (binary or ASCII) / OBJ+JSON+MTL / OFF+JSON / glTF
+// (docs/volume-export.md).
 //
 // Why umbra writes the PLY bytes itself: OpenMesh 9.0's PLY writer always
 // declares and writes the vertex position as `float x, y, z`, even for a mesh
@@ -11,16 +12,20 @@
 #include <geometry/export/gltf_writer.h>
 #include <geometry/export/indexed_faces.h>
 #include <geometry/export/mesh_text.h>
+#include <geometry/export/obj_materials.h>
 #include <geometry/export/volume_export.h>
+#include <geometry/export/volume_groups.h>
 #include <geometry/io/mesh_lexer.h>
 #include <util/atomic_files.h>
 #include <util/input_error.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,8 +56,8 @@ constexpr const char* kWhat = "write_volumes: shadow polygon";
 constexpr std::array<const char*, 7> kAttributeNames{"light", "model", "polygon", "edge",
                                                      "type",  "nb_c",  "twisted"};
 
-std::int32_t to_int32(std::uint32_t value, const char* field) {
-  if (value > static_cast<std::uint32_t>(std::numeric_limits<std::int32_t>::max()))
+std::int32_t to_int32(std::uint64_t value, const char* field) {
+  if (value > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument(std::string("write_volumes: ") + field + " " +
                                 std::to_string(value) + " does not fit a 32-bit int");
   return static_cast<std::int32_t>(value);
@@ -85,32 +90,105 @@ constexpr const char* kTypeConvention =
     "model projected to the far end (far cap)";
 
 /// Pretty JSON with each attribute array on one line (nlohmann's indented
-/// dump would put every number on a line of its own).
-std::string sidecar_text(const std::vector<FaceAttribute>& columns, const fs::path& mesh) {
+/// dump would put every number on a line of its own). Entry i of every
+/// array is face i of the mesh file, which is face `order[i]` of the export.
+std::string sidecar_text(const std::vector<FaceAttribute>& columns,
+                         const std::vector<std::size_t>& order, const fs::path& mesh) {
   // File names need not be UTF-8; replace bad bytes rather than fail.
   const auto dump = [](const nlohmann::json& value) {
     return value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   };
+  const auto array = [&](const auto& value_of) {
+    std::string text = "[";
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      if (i > 0) text += ", ";
+      text += std::to_string(value_of(order[i]));
+    }
+    return text + "]";
+  };
   std::string out = "{\n";
   out += "  \"format\": \"umbra shadow volume attributes\",\n";
-  out += "  \"version\": 1,\n";
+  out += "  \"version\": 2,\n";
   out += "  \"mesh\": " + dump(mesh.filename().string()) + ",\n";
-  out += "  \"faces\": " + std::to_string(columns.front().values.size()) + ",\n";
+  out += "  \"faces\": " + std::to_string(order.size()) + ",\n";
   out += "  \"nb_c_convention\": " + dump(kNbCConvention) + ",\n";
   out += "  \"type_convention\": " + dump(kTypeConvention) + ",\n";
   out += "  \"attributes\": {\n";
+  out += "    \"face\": " + array([](std::size_t f) { return f; }) + ",\n";
   for (std::size_t a = 0; a < kAttributeNames.size(); ++a) {
     out += "    \"";
     out += kAttributeNames[a];
-    out += "\": [";
-    for (std::size_t i = 0; i < columns[a].values.size(); ++i) {
-      if (i > 0) out += ", ";
-      out += std::to_string(columns[a].values[i]);
-    }
-    out += a + 1 < kAttributeNames.size() ? "],\n" : "]\n";
+    out += "\": " + array([&](std::size_t f) { return columns[a].values[f]; });
+    out += a + 1 < kAttributeNames.size() ? ",\n" : "\n";
   }
   out += "  }\n}\n";
   return out;
+}
+
+/// The OBJ's faces: the export's, grouped by (light, type) (volume_groups.h).
+std::vector<std::size_t> grouped_order(const std::vector<detail::VolumeGroup>& groups) {
+  std::vector<std::size_t> order;
+  for (const detail::VolumeGroup& g : groups)
+    order.insert(order.end(), g.faces.begin(), g.faces.end());
+  return order;
+}
+
+std::string volume_obj_text(const ShadowVolumes& volumes, const std::vector<std::size_t>& order,
+                            const fs::path& sidecar, const fs::path& mtl) {
+  const IndexedFaces indexed = index_faces(
+      order.size(),
+      [&](std::size_t i) { return std::span<const Vec3>(volumes.polygons[order[i]].vertices); },
+      kWhat);
+  ObjGroups groups{mtl.filename().string(), {}};
+  for (const std::size_t f : order)
+    groups.names.push_back(
+        detail::volume_group_name(volumes.polygons[f].light, volumes.polygons[f].type));
+  return obj_text(indexed,
+                  "umbra shadow volumes: " + std::to_string(order.size()) +
+                      " faces grouped by light and type; per-face attributes in " +
+                      sidecar.filename().string(),
+                  &groups);
+}
+
+std::string volume_mtl_text(const std::vector<detail::VolumeGroup>& groups) {
+  std::vector<ObjMaterial> materials;
+  for (const detail::VolumeGroup& g : groups)
+    materials.push_back(
+        {detail::volume_group_name(g.light, g.type), detail::volume_group_colour(g.type).mtl});
+  return mtl_text("umbra shadow volumes: near caps orange, sides grey-blue, far caps violet",
+                  materials);
+}
+
+std::array<std::string, 3> ply_comments(const std::string& order) {
+  return {"umbra shadow volumes: one face per shadow polygon, " + order, kNbCConvention,
+          kTypeConvention};
+}
+
+/// The ASCII PLY lists the faces by vertex count (stably: triangles in
+/// export order, then quads, ...) with their export index as the last
+/// property, `face`: meshio 7's ASCII reader files each face's properties
+/// under its vertex count and refuses a file where one count comes back
+/// after another (docs/volume-export.md, "Importers").
+std::string ascii_ply_text(const ShadowVolumes& volumes) {
+  std::vector<std::size_t> order(volumes.polygons.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return volumes.polygons[a].vertices.size() < volumes.polygons[b].vertices.size();
+  });
+  const IndexedFaces indexed = index_faces(
+      order.size(),
+      [&](std::size_t i) { return std::span<const Vec3>(volumes.polygons[order[i]].vertices); },
+      kWhat);
+  const std::vector<FaceAttribute> all = attribute_columns(volumes);
+  std::vector<FaceAttribute> columns;
+  for (const FaceAttribute& a : all) {
+    columns.push_back({a.name, {}});
+    for (const std::size_t f : order) columns.back().values.push_back(a.values[f]);
+  }
+  columns.push_back({"face", {}});
+  for (const std::size_t f : order) columns.back().values.push_back(to_int32(f, "face"));
+  return ply_bytes(indexed, ply_comments("by vertex count; face is its index in the export"),
+                   columns, {}, PlyEncoding::ascii);
 }
 
 }  // namespace
@@ -123,7 +201,13 @@ std::optional<fs::path> volume_sidecar_path(const fs::path& path) {
   return sidecar;
 }
 
-void write_volumes(const ShadowVolumes& volumes, const fs::path& path) {
+std::optional<fs::path> volume_material_path(const fs::path& path) {
+  if (format_of(path) != Format::obj) return std::nullopt;
+  return obj_material_path(path, "volume");
+}
+
+void write_volumes(const ShadowVolumes& volumes, const fs::path& path,
+                   const VolumeFileOptions& options) {
   const Format format = format_of(path);
   std::vector<std::pair<fs::path, std::string>> files;
   if (format == Format::gltf || format == Format::glb) {
@@ -133,37 +217,29 @@ void write_volumes(const ShadowVolumes& volumes, const fs::path& path) {
       check_face(volumes.polygons[i].vertices, i, kWhat);
     files.emplace_back(path,
                        detail::gltf_volume_bytes(volumes, format == Format::glb, path.string()));
-    util::write_all_or_nothing(files);
-    return;
-  }
-  const IndexedFaces indexed = index_faces(
-      volumes.polygons.size(),
-      [&](std::size_t i) { return std::span<const Vec3>(volumes.polygons[i].vertices); }, kWhat);
-  const std::vector<FaceAttribute> columns = attribute_columns(volumes);
-  switch (format) {
-    case Format::ply: {
-      const std::array<std::string, 3> comments{
-          "umbra shadow volumes: one face per shadow polygon, in order", kNbCConvention,
-          kTypeConvention};
-      files.emplace_back(path, ply_bytes(indexed, comments, columns));
-      break;
+  } else if (format == Format::obj) {
+    const fs::path sidecar = *volume_sidecar_path(path);
+    const fs::path mtl = *volume_material_path(path);
+    const std::vector<detail::VolumeGroup> groups = detail::volume_groups(volumes);
+    const std::vector<std::size_t> order = grouped_order(groups);
+    files.emplace_back(path, volume_obj_text(volumes, order, sidecar, mtl));
+    files.emplace_back(sidecar, sidecar_text(attribute_columns(volumes), order, path));
+    files.emplace_back(mtl, volume_mtl_text(groups));
+  } else if (format == Format::ply && options.ply == PlyEncoding::ascii) {
+    files.emplace_back(path, ascii_ply_text(volumes));
+  } else {
+    const IndexedFaces indexed = index_faces(
+        volumes.polygons.size(),
+        [&](std::size_t i) { return std::span<const Vec3>(volumes.polygons[i].vertices); }, kWhat);
+    const std::vector<FaceAttribute> columns = attribute_columns(volumes);
+    if (format == Format::ply) {
+      files.emplace_back(path, ply_bytes(indexed, ply_comments("in order"), columns));
+    } else {
+      std::vector<std::size_t> order(volumes.polygons.size());
+      std::iota(order.begin(), order.end(), std::size_t{0});
+      files.emplace_back(path, off_text(indexed));
+      files.emplace_back(*volume_sidecar_path(path), sidecar_text(columns, order, path));
     }
-    case Format::obj:
-    case Format::off: {
-      const fs::path sidecar = *volume_sidecar_path(path);
-      files.emplace_back(
-          path,
-          format == Format::obj
-              ? obj_text(indexed, "umbra shadow volumes: " + std::to_string(indexed.faces.size()) +
-                                      " faces in order; per-face attributes in " +
-                                      sidecar.filename().string())
-              : off_text(indexed));
-      files.emplace_back(sidecar, sidecar_text(columns, path));
-      break;
-    }
-    case Format::gltf:
-    case Format::glb:
-      break;  // written above
   }
   util::write_all_or_nothing(files);
 }

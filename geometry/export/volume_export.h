@@ -1,7 +1,10 @@
 #pragma once
 // Shadow volumes written to mesh files for other tools: PLY with per-face
-// properties, or OBJ/OFF with a JSON sidecar holding the same attributes.
+// properties, OBJ/OFF with a JSON sidecar holding the same attributes, or
+// glTF; OBJ and glTF also group the faces by (light, type) with a named
+// material each, which importers that drop per-face data keep.
 // docs/volume-export.md is the reference for the layouts.
+#include <geometry/export/mesh_text.h>
 #include <geometry/volumes/shadow_volume.h>
 
 #include <filesystem>
@@ -9,22 +12,34 @@
 
 namespace umbra::geometry {
 
+/// How write_volumes encodes what has a choice.
+struct VolumeFileOptions {
+  PlyEncoding ply = PlyEncoding::binary;  ///< `.ply` only: binary or ASCII (both exact)
+};
+
 /// Writes every face of `volumes` to `path`, the format chosen by its
 /// extension (case-insensitive):
 ///
-/// - `.ply`: binary little-endian PLY; vertices as `double x, y, z`; faces as
-///   `vertex_indices` plus the int properties `light`, `model`, `polygon`,
-///   `edge`, `type` (1/2/3), `nb_c` and `twisted` (0/1).
+/// - `.ply`: PLY (binary little-endian, or ASCII with `options.ply`);
+///   vertices as `double x, y, z`; faces as `vertex_indices` plus the int
+///   properties `light`, `model`, `polygon`, `edge`, `type` (1/2/3), `nb_c`
+///   and `twisted` (0/1).
 /// - `.obj`, `.off`: coordinates as the shortest decimal text that reads back
 ///   to the same double; the attributes go to the sidecar `<path>.json`
-///   (volume_sidecar_path), as arrays in face order.
+///   (volume_sidecar_path), as arrays in the mesh file's face order, with
+///   `face` the export index. The OBJ lists its faces grouped by (light,
+///   type), `g`/`usemtl` `light<L>_near_cap|_side|_far_cap`, with the
+///   materials in `<stem>.mtl` (volume_material_path); the OFF in export
+///   order.
 /// - `.gltf`, `.glb`: glTF 2.0 with float32 positions (rounded: not exact);
-///   one triangle primitive per light; each face fan-triangulated on its own
+///   one node, mesh, triangle primitive and material per (light, type),
+///   named like the OBJ groups; each face fan-triangulated on its own
 ///   vertices, which carry its attributes as float custom attributes
 ///   `_FACE`, `_LIGHT`, ... (docs/volume-export.md, "glTF"). A coordinate
 ///   beyond the float range is an InputError.
 ///
-/// Faces appear in `volumes.polygons` order, each with its vertices in their
+/// The PLY and OFF list the faces in `volumes.polygons` order; every format
+/// keeps each face's vertices in their
 /// order (the orientation that gives `nb_c` its sign: the count added when
 /// the face is crossed from the side on which its vertices run
 /// counter-clockwise; the other side adds -nb_c). Bit-identical positions
@@ -40,12 +55,19 @@ namespace umbra::geometry {
 /// Throws InputError naming `path` for an unknown extension or a failed
 /// write; std::invalid_argument for a polygon with fewer than 3 vertices or
 /// a non-finite coordinate (a bug upstream, not bad input).
-void write_volumes(const ShadowVolumes& volumes, const std::filesystem::path& path);
+void write_volumes(const ShadowVolumes& volumes, const std::filesystem::path& path,
+                   const VolumeFileOptions& options = {});
 
 /// The sidecar JSON that write_volumes writes beside `path`: `<path>.json`
 /// for `.obj` and `.off`; nothing for `.ply` (its faces carry the
 /// attributes) nor for `.gltf`/`.glb` (their vertices do). Throws InputError
 /// naming `path` for an unknown extension.
 std::optional<std::filesystem::path> volume_sidecar_path(const std::filesystem::path& path);
+
+/// The MTL sidecar that write_volumes writes beside an `.obj`: `<stem>.mtl`;
+/// nothing for the other formats. Throws InputError naming `path` for an
+/// unknown extension or an `.obj` name with whitespace (its `mtllib` line
+/// could not name the MTL).
+std::optional<std::filesystem::path> volume_material_path(const std::filesystem::path& path);
 
 }  // namespace umbra::geometry

@@ -81,7 +81,7 @@ set(_no_camera ${PROJECT_SOURCE_DIR}/tests/data/scenes/no_camera)
 umbra_cli_test(volume_json_without_camera ARGS volume ${_no_camera}/two_lights.json -o v.ply EXIT 0
   STDOUT "^wrote v\\.ply: [1-9][0-9]* faces [^\n]*light 0: [1-9][0-9]*, light 1: [1-9][0-9]*\\)" EXIST v.ply)
 umbra_cli_test(volume_gltf_without_camera ARGS volume ${_no_camera}/two_lights.gltf -o v.obj EXIT 0
-  STDOUT "^wrote v\\.obj \\+ v\\.obj\\.json: [1-9][0-9]* faces" EXIST v.obj v.obj.json)
+  STDOUT "^wrote v\\.obj \\+ v\\.obj\\.json \\+ v\\.mtl: [1-9][0-9]* faces" EXIST v.obj v.obj.json v.mtl)
 umbra_cli_test(render_json_without_camera ARGS render ${_no_camera}/two_lights.json -o r.png EXIT 2
   STDERR "^umbra: [^\n]*two_lights\\.json: camera: missing required field 'camera'\n$" ABSENT r.png)
 umbra_cli_test(render_gltf_without_camera ARGS render ${_no_camera}/two_lights.gltf -o r.png EXIT 2

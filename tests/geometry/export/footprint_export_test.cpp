@@ -7,11 +7,10 @@
 // square [-2, 2]² (tests/geometry/footprint/footprint_test.cpp).
 #include <geometry/export/footprint_export.h>
 #include <geometry/footprint/footprint.h>
+#include <tests/support/openmesh_ply.h>
 #include <tests/support/polygon_model.h>
 #include <util/input_error.h>
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
@@ -104,16 +103,9 @@ TEST_F(FootprintExport, PlyReadsBackThroughOpenMeshWithEveryPropertyAndExactDoub
   write_footprints(f, scene, file);
   EXPECT_EQ(files_in_dir(), std::vector<std::string>{"fp.ply"});
 
-  struct Traits : OpenMesh::DefaultTraits {
-    using Point = OpenMesh::Vec3d;
-  };
-  using Mesh = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
-  Mesh mesh;
-  OpenMesh::IO::Options options = OpenMesh::IO::Options::Custom;
-  ::testing::internal::CaptureStderr();
-  const bool read = OpenMesh::IO::read_mesh(mesh, file.string(), options);
-  const std::string warnings = ::testing::internal::GetCapturedStderr();
-  ASSERT_TRUE(read);
+  umbra::test::DoubleMesh mesh;
+  std::string warnings;
+  ASSERT_TRUE(umbra::test::read_ply_with_properties(mesh, file, warnings));
   EXPECT_EQ(warnings, "");
   ASSERT_EQ(mesh.n_faces(), f.regions.size());
 

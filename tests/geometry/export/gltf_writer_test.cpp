@@ -1,7 +1,7 @@
 // Shadow volumes exported as glTF, read back by two readers umbra's writer
-// does not share code with: assimp (Debian's libassimp: meshes, triangles,
-// positions, node metadata) and tinygltf's raw accessors (the per-vertex
-// custom attributes, which assimp 5.2 drops).
+// does not share code with: assimp (Debian's libassimp: meshes, materials,
+// triangles, positions, node metadata) and tinygltf's raw accessors (the
+// per-vertex custom attributes, which assimp 5.2 drops).
 #include <geometry/export/volume_export.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/volumes/builder.h>
@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace umbra::geometry {
@@ -44,27 +45,43 @@ class VolumeExportGltf : public ::testing::TestWithParam<const char*> {
   ShadowVolumes volumes_;
 };
 
-/// Per light: the faces of that light in export order.
-std::map<std::uint32_t, std::vector<std::size_t>> faces_by_light(const ShadowVolumes& v) {
-  std::map<std::uint32_t, std::vector<std::size_t>> out;
-  for (std::size_t i = 0; i < v.polygons.size(); ++i) out[v.polygons[i].light].push_back(i);
+/// Per (light, type), in light then type order: the group's name and its
+/// faces in export order, computed from the volumes, not from the writer.
+std::map<std::pair<std::uint32_t, int>, std::vector<std::size_t>> faces_by_group(
+    const ShadowVolumes& v) {
+  std::map<std::pair<std::uint32_t, int>, std::vector<std::size_t>> out;
+  for (std::size_t i = 0; i < v.polygons.size(); ++i)
+    out[{v.polygons[i].light, static_cast<int>(v.polygons[i].type)}].push_back(i);
   return out;
 }
 
-TEST_P(VolumeExportGltf, AssimpReadsOneMeshPerLightWithEveryTriangleAndFloatPositions) {
+std::string group_name(std::uint32_t light, int type) {
+  static const char* const kTypes[] = {"", "near_cap", "side", "far_cap"};
+  return "light" + std::to_string(light) + "_" + kTypes[type];
+}
+
+TEST_P(VolumeExportGltf, AssimpReadsAMeshAndMaterialPerLightAndTypeWithEveryTriangle) {
   const fs::path path = dir_ / (std::string("vol") + GetParam());
   write_volumes(volumes_, path);
   Assimp::Importer importer;
   const aiScene* s = importer.ReadFile(path.string(), 0);  // no post-processing: as written
   ASSERT_NE(s, nullptr) << importer.GetErrorString();
-  const auto by_light = faces_by_light(volumes_);
-  ASSERT_EQ(s->mNumMeshes, by_light.size());
-  ASSERT_EQ(s->mRootNode->mNumChildren, by_light.size());
+  const auto by_group = faces_by_group(volumes_);
+  // two_lights.json: both lights cast all three types.
+  ASSERT_EQ(by_group.size(), 6u);
+  ASSERT_EQ(s->mNumMeshes, by_group.size());
+  ASSERT_EQ(s->mNumMaterials, by_group.size() + 1);  // and assimp's default material, last
+  ASSERT_EQ(s->mRootNode->mNumChildren, by_group.size());
   std::size_t m = 0;
-  for (const auto& [light, faces] : by_light) {
+  for (const auto& [key, faces] : by_group) {
+    const std::string name = group_name(key.first, key.second);
+    SCOPED_TRACE(name);
     const aiMesh* mesh = s->mMeshes[m];
     const aiNode* node = s->mRootNode->mChildren[m];
     ++m;
+    EXPECT_EQ(std::string(mesh->mName.C_Str()), name);
+    EXPECT_EQ(std::string(node->mName.C_Str()), name);
+    EXPECT_EQ(std::string(s->mMaterials[mesh->mMaterialIndex]->GetName().C_Str()), name);
     std::size_t triangles = 0;
     std::vector<Vec3> corners;
     for (const std::size_t f : faces) {
@@ -83,7 +100,9 @@ TEST_P(VolumeExportGltf, AssimpReadsOneMeshPerLightWithEveryTriangleAndFloatPosi
     ASSERT_NE(node->mMetaData, nullptr);
     std::uint64_t value = 0;
     ASSERT_TRUE(node->mMetaData->Get("umbra_light", value));
-    EXPECT_EQ(value, light);
+    EXPECT_EQ(value, key.first);
+    ASSERT_TRUE(node->mMetaData->Get("umbra_type", value));
+    EXPECT_EQ(value, static_cast<std::uint64_t>(key.second));
     ASSERT_TRUE(node->mMetaData->Get("umbra_faces", value));
     EXPECT_EQ(value, faces.size());
     ASSERT_TRUE(node->mMetaData->Get("umbra_triangles", value));

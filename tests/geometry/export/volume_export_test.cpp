@@ -4,10 +4,9 @@
 // JSON sidecar — and no file left behind by a failed write.
 #include <geometry/export/volume_export.h>
 #include <geometry/io/mesh_io.h>
+#include <tests/support/openmesh_ply.h>
 #include <util/input_error.h>
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -108,11 +107,13 @@ ShadowVolumes hand_built_volumes() {
 }
 
 /// Every face of `soup` has the positions of the matching shadow polygon,
-/// bit for bit and in the same order (same first vertex too).
-void expect_same_faces(const PolygonSoup& soup, const ShadowVolumes& volumes) {
+/// bit for bit and in the same order (same first vertex too): face i of the
+/// file is polygon `order[i]`, polygon i without `order`.
+void expect_same_faces(const PolygonSoup& soup, const ShadowVolumes& volumes,
+                       const std::vector<std::size_t>& order = {}) {
   ASSERT_EQ(soup.polygons.size(), volumes.polygons.size());
   for (std::size_t i = 0; i < volumes.polygons.size(); ++i) {
-    const auto& want = volumes.polygons[i].vertices;
+    const auto& want = volumes.polygons[order.empty() ? i : order[i]].vertices;
     ASSERT_EQ(soup.polygons[i].size(), want.size()) << "face " << i;
     for (std::size_t k = 0; k < want.size(); ++k)
       EXPECT_TRUE(bit_identical(soup.vertices[soup.polygons[i][k]], want[k]))
@@ -146,21 +147,14 @@ TEST_F(VolumeExport, PlyReadsBackBitIdenticalThroughUmbrasReader) {
 }
 
 TEST_F(VolumeExport, PlyLoadsIntoOpenMeshWithEveryFaceAndAttributeAndNoWarning) {
-  struct Traits : OpenMesh::DefaultTraits {
-    using Point = OpenMesh::Vec3d;
-  };
-  using Mesh = OpenMesh::PolyMesh_ArrayKernelT<Traits>;
   const ShadowVolumes volumes = hand_built_volumes();
   const fs::path file = dir_ / "vol.ply";
   write_volumes(volumes, file);
   const PolygonSoup soup = read_polygon_soup(file);
 
-  Mesh mesh;
-  OpenMesh::IO::Options options = OpenMesh::IO::Options::Custom;
-  ::testing::internal::CaptureStderr();
-  const bool read = OpenMesh::IO::read_mesh(mesh, file.string(), options);
-  const std::string warnings = ::testing::internal::GetCapturedStderr();
-  ASSERT_TRUE(read);
+  umbra::test::DoubleMesh mesh;
+  std::string warnings;
+  ASSERT_TRUE(umbra::test::read_ply_with_properties(mesh, file, warnings));
   // OpenMesh 9 duplicates the vertices of a refused face silently; the vertex
   // count below catches that, this catches the faces it reports as dropped.
   EXPECT_EQ(warnings, "");
@@ -186,30 +180,49 @@ TEST_F(VolumeExport, PlyLoadsIntoOpenMeshWithEveryFaceAndAttributeAndNoWarning) 
   }
 }
 
+/// The attribute column `name` in the order `order` (the mesh file's).
+std::vector<int> attribute(const ShadowVolumes& v, const std::string& name,
+                           const std::vector<std::size_t>& order) {
+  const std::vector<int> all = attribute(v, name);
+  std::vector<int> out;
+  for (const std::size_t f : order) out.push_back(all[f]);
+  return out;
+}
+
+// The OFF keeps the export order; the OBJ groups by (light, type), lights in
+// order, then types (tests/geometry/export/volume_importers_test.cpp reads its
+// groups), and the sidecar's `face` says which polygon each face is.
 TEST_F(VolumeExport, ObjAndOffReadBackBitIdenticalWithTheirSidecar) {
   const ShadowVolumes volumes = hand_built_volumes();
   for (const std::string name : {"vol.obj", "vol.off", "VOL.OFF"}) {
     SCOPED_TRACE(name);
     const fs::path file = dir_ / name;
     write_volumes(volumes, file);
-    expect_same_faces(read_polygon_soup(file), volumes);
+    const bool obj = name == "vol.obj";
+    // hand_built_volumes' faces by (light, type): (0,1) 0; (0,2) 1, 5; (1,2) 3, 4; (1,3) 2.
+    const std::vector<std::size_t> order = obj ? std::vector<std::size_t>{0, 1, 5, 3, 4, 2}
+                                               : std::vector<std::size_t>{0, 1, 2, 3, 4, 5};
+    expect_same_faces(read_polygon_soup(file), volumes, order);
 
     const fs::path sidecar = dir_ / (name + ".json");
     ASSERT_EQ(volume_sidecar_path(file), sidecar);
     std::ifstream in(sidecar);
     const nlohmann::json json = nlohmann::json::parse(in);
     EXPECT_EQ(json.at("format"), "umbra shadow volume attributes");
-    EXPECT_EQ(json.at("version"), 1);
+    EXPECT_EQ(json.at("version"), 2);
     EXPECT_EQ(json.at("mesh"), name);
     EXPECT_EQ(json.at("faces"), volumes.polygons.size());
     EXPECT_NE(json.at("nb_c_convention").get<std::string>().find("counter-clockwise"),
               std::string::npos);
-    EXPECT_EQ(json.at("attributes").size(), kAttributes.size());
+    EXPECT_EQ(json.at("attributes").size(), kAttributes.size() + 1);
+    EXPECT_EQ(json.at("attributes").at("face").get<std::vector<std::size_t>>(), order);
     for (const std::string& attribute_name : kAttributes)
       EXPECT_EQ(json.at("attributes").at(attribute_name).get<std::vector<int>>(),
-                attribute(volumes, attribute_name))
+                attribute(volumes, attribute_name, order))
           << attribute_name;
   }
+  EXPECT_EQ(volume_material_path(dir_ / "vol.obj"), dir_ / "vol.mtl");
+  EXPECT_EQ(volume_material_path(dir_ / "vol.off"), std::nullopt);
 }
 
 TEST_F(VolumeExport, SidecarOnlyForFormatsWithoutAttributes) {
@@ -262,7 +275,8 @@ TEST_F(VolumeExport, EmptyVolumesWriteEmptyFiles) {
   const ShadowVolumes none;
   write_volumes(none, dir_ / "vol.ply");
   write_volumes(none, dir_ / "vol.obj");
-  EXPECT_EQ(files_in_dir(), (std::vector<std::string>{"vol.obj", "vol.obj.json", "vol.ply"}));
+  EXPECT_EQ(files_in_dir(),
+            (std::vector<std::string>{"vol.mtl", "vol.obj", "vol.obj.json", "vol.ply"}));
   std::ifstream in(dir_ / "vol.obj.json");
   EXPECT_EQ(nlohmann::json::parse(in).at("attributes").at("nb_c").size(), 0u);
 }
