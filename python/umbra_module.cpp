@@ -1,8 +1,10 @@
 // `import umbra`: the library from Python (pybind11, numpy arrays in and
 // out). A thin layer like the CLI: load a scene, render it, build its
-// shadow volumes, ask the exact oracle; errors become umbra.InputError with
+// shadow volumes, ask the exact oracle, partition receivers into exact
+// footprints; errors become umbra.InputError with
 // umbra's one-line message. docs/python.md.
 #include <geometry/exact/visible_surface.h>
+#include <geometry/footprint/footprint.h>
 #include <geometry/io/scene_json.h>
 #include <geometry/oracle/scene_index.h>
 #include <geometry/oracle/shadow_oracle.h>
@@ -55,6 +57,36 @@ raster::Method method_of(const std::string& name) {
   if (name == "ray") return raster::Method::ray;
   if (name == "exact") return raster::Method::exact;
   throw py::value_error("method '" + name + "': expected volume, map, ray or exact");
+}
+
+/// A one-dimensional array holding `field(item)` for every item.
+template <class T, class Items, class Field>
+py::array_t<T> column(const Items& items, Field field) {
+  py::array_t<T> out(static_cast<py::ssize_t>(items.size()));
+  T* to = out.mutable_data();
+  for (const auto& item : items) *to++ = static_cast<T>(field(item));
+  return out;
+}
+
+/// Polygons into `out` as "vertices" (V, 3) float64 and "offsets" (P + 1)
+/// int64: polygon k is vertices[offsets[k]:offsets[k + 1]].
+template <class Items, class VerticesOf>
+void put_polygons(py::dict& out, const Items& items, VerticesOf vertices_of) {
+  std::size_t count = 0;
+  for (const auto& item : items) count += vertices_of(item).size();
+  py::array_t<double> xyz({static_cast<py::ssize_t>(count), py::ssize_t{3}});
+  py::array_t<std::int64_t> offsets(static_cast<py::ssize_t>(items.size() + 1));
+  double* v = xyz.mutable_data();
+  std::int64_t* off = offsets.mutable_data();
+  *off = 0;
+  for (const auto& item : items) {
+    for (const geometry::Vec3& q : vertices_of(item))
+      for (const double x : {q.x, q.y, q.z}) *v++ = x;
+    off[1] = off[0] + static_cast<std::int64_t>(vertices_of(item).size());
+    ++off;
+  }
+  out["vertices"] = xyz;
+  out["offsets"] = offsets;
 }
 
 /// A row-major float32 array of `shape` holding `values`.
@@ -110,45 +142,17 @@ py::dict shadow_volumes(PyScene& self, std::optional<std::int64_t> light, bool c
     volumes = geometry::build_shadow_volumes(self.scene(), {.caps = caps, .threads = threads});
   }
   std::vector<const geometry::ShadowPolygon*> kept;
-  std::size_t vertices = 0;
   for (const geometry::ShadowPolygon& p : volumes.polygons)
-    if (!light || p.light == static_cast<std::uint32_t>(*light)) {
-      kept.push_back(&p);
-      vertices += p.vertices.size();
-    }
-  const auto n = static_cast<py::ssize_t>(kept.size());
-  py::array_t<double> xyz({static_cast<py::ssize_t>(vertices), py::ssize_t{3}});
-  py::array_t<std::int64_t> offsets(n + 1);
-  py::array_t<std::uint32_t> lights(n), models(n), polygons(n);
-  py::array_t<std::uint8_t> types(n), twisted(n);
-  py::array_t<std::int32_t> nb_c(n);
-  double* v = xyz.mutable_data();
-  std::int64_t* off = offsets.mutable_data();
-  off[0] = 0;
-  for (py::ssize_t k = 0; k < n; ++k) {
-    const geometry::ShadowPolygon& p = *kept[static_cast<std::size_t>(k)];
-    for (const geometry::Vec3& q : p.vertices) {
-      *v++ = q.x;
-      *v++ = q.y;
-      *v++ = q.z;
-    }
-    off[k + 1] = off[k] + static_cast<std::int64_t>(p.vertices.size());
-    lights.mutable_data()[k] = p.light;
-    models.mutable_data()[k] = p.model;
-    polygons.mutable_data()[k] = p.polygon;
-    types.mutable_data()[k] = static_cast<std::uint8_t>(p.type);
-    nb_c.mutable_data()[k] = p.nb_c;
-    twisted.mutable_data()[k] = p.twisted ? 1 : 0;
-  }
+    if (!light || p.light == static_cast<std::uint32_t>(*light)) kept.push_back(&p);
+  using P = const geometry::ShadowPolygon*;
   py::dict out;
-  out["vertices"] = xyz;
-  out["offsets"] = offsets;
-  out["light"] = lights;
-  out["model"] = models;
-  out["polygon"] = polygons;
-  out["type"] = types;
-  out["nb_c"] = nb_c;
-  out["twisted"] = twisted;
+  put_polygons(out, kept, [](P p) -> const std::vector<geometry::Vec3>& { return p->vertices; });
+  out["light"] = column<std::uint32_t>(kept, [](P p) { return p->light; });
+  out["model"] = column<std::uint32_t>(kept, [](P p) { return p->model; });
+  out["polygon"] = column<std::uint32_t>(kept, [](P p) { return p->polygon; });
+  out["type"] = column<std::uint8_t>(kept, [](P p) { return p->type; });
+  out["nb_c"] = column<std::int32_t>(kept, [](P p) { return p->nb_c; });
+  out["twisted"] = column<std::uint8_t>(kept, [](P p) { return p->twisted; });
   return out;
 }
 
@@ -226,6 +230,52 @@ py::dict in_shadow(PyScene& self, const py::array_t<double, py::array::c_style>&
   return out;
 }
 
+/// The exact footprints (docs/footprints.md): "regions", a dict of
+/// "vertices" (V, 3), "offsets" (R + 1) and per region "light", "model",
+/// "polygon", "triangle", "cls" (0 shadowed, 1 lit), "facing", "area"; and
+/// "receivers", per (light, receiving polygon) "light", "model",
+/// "polygon", "facing", "area", "lit_area", "shadowed_area",
+/// "sunlit_fraction": what `umbra footprint` writes to PLY and CSV.
+py::dict footprints(PyScene& self, std::vector<std::uint32_t> lights,
+                    std::vector<std::string> receivers, bool ignore_light_end, unsigned threads) {
+  geometry::FootprintOptions options;
+  options.lights = std::move(lights);
+  options.receivers = std::move(receivers);
+  options.ignore_light_end = ignore_light_end;
+  options.threads = threads;
+  geometry::Footprints f;
+  {
+    py::gil_scoped_release unlocked;
+    f = geometry::compute_footprints(self.scene(), options);
+  }
+  using R = geometry::FootprintRegion;
+  using S = geometry::ReceiverSummary;
+  py::dict regions, summary;
+  put_polygons(regions, f.regions,
+               [](const R& r) -> const std::vector<geometry::Vec3>& { return r.vertices; });
+  regions["light"] = column<std::uint32_t>(f.regions, [](const R& r) { return r.light; });
+  regions["model"] = column<std::uint32_t>(f.regions, [](const R& r) { return r.model; });
+  regions["polygon"] = column<std::uint32_t>(f.regions, [](const R& r) { return r.polygon; });
+  regions["triangle"] = column<std::int32_t>(f.regions, [](const R& r) { return r.triangle; });
+  regions["cls"] = column<std::uint8_t>(f.regions, [](const R& r) { return r.cls; });
+  regions["facing"] = column<std::int8_t>(f.regions, [](const R& r) { return r.facing; });
+  regions["area"] = column<double>(f.regions, [](const R& r) { return r.area; });
+  summary["light"] = column<std::uint32_t>(f.receivers, [](const S& r) { return r.light; });
+  summary["model"] = column<std::uint32_t>(f.receivers, [](const S& r) { return r.model; });
+  summary["polygon"] = column<std::uint32_t>(f.receivers, [](const S& r) { return r.polygon; });
+  summary["facing"] = column<std::int8_t>(f.receivers, [](const S& r) { return r.facing; });
+  summary["area"] = column<double>(f.receivers, [](const S& r) { return r.area; });
+  summary["lit_area"] = column<double>(f.receivers, [](const S& r) { return r.lit_area; });
+  summary["shadowed_area"] =
+      column<double>(f.receivers, [](const S& r) { return r.shadowed_area; });
+  summary["sunlit_fraction"] =
+      column<double>(f.receivers, [](const S& r) { return r.sunlit_fraction; });
+  py::dict out;
+  out["regions"] = regions;
+  out["receivers"] = summary;
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(umbra, m) {
@@ -255,6 +305,10 @@ PYBIND11_MODULE(umbra, m) {
       .def("shadow_volumes", &shadow_volumes, py::arg("light") = py::none(), py::arg("caps") = true,
            py::arg("threads") = 0,
            "Shadow volume polygons as arrays (vertices, offsets, per-polygon attributes)")
+      .def("footprints", &footprints, py::arg("lights") = std::vector<std::uint32_t>{},
+           py::arg("receivers") = std::vector<std::string>{}, py::arg("ignore_light_end") = false,
+           py::arg("threads") = 0,
+           "Exact lit and shadowed regions on the receivers, and the per-receiver areas")
       .def("sample_rays", &sample_rays,
            "The camera's rays through every pixel centre: origins, directions (H, W, 3)")
       .def("in_shadow", &in_shadow, py::arg("origins"), py::arg("directions"), py::arg("light"),

@@ -2,6 +2,7 @@
 is the exact oracle's class, the shadow volumes are the CLI's, and errors
 are Python exceptions carrying umbra's one-line message (docs/python.md).
 Run by CTest `python.module` with PYTHONPATH=build/python."""
+import csv
 import json
 import os
 import re
@@ -110,3 +111,37 @@ def test_a_scene_without_a_camera_builds_volumes_but_does_not_render(tmp_path):
         s.render()
     with pytest.raises(umbra.InputError):
         umbra.load_scene(str(path), camera=True)
+
+
+def test_footprints_are_the_ones_umbra_footprint_writes(tmp_path):
+    path = os.path.join(DATA, "scenes", "sun", "golden.json")
+    table = tmp_path / "f.csv"
+    out = subprocess.run([CLI, "footprint", path, "-o", str(tmp_path / "f.ply"), "--csv",
+                          str(table)], check=True, capture_output=True, text=True).stdout
+    regions = int(re.search(r": (\d+) regions on", out)[1])
+    f = umbra.load_scene(path).footprints()
+    r = f["regions"]
+    assert len(r["area"]) == regions > 0
+    assert set(np.unique(r["cls"]).tolist()) == {0, 1}
+    assert r["offsets"][-1] == len(r["vertices"])
+    with open(table, newline="") as t:
+        rows = list(csv.DictReader(t))
+    s = f["receivers"]
+    assert len(rows) == len(s["area"])
+    for k, row in enumerate(rows):
+        # The CSV's numbers are the shortest text of the same doubles.
+        for key in ("area", "lit_area", "shadowed_area", "sunlit_fraction"):
+            assert s[key][k] == float(row[key]), (k, key)
+        for key in ("light", "model", "polygon", "facing"):
+            assert s[key][k] == int(row[key]), (k, key)
+    # Each receiver's regions of each class add up to its areas (rounded
+    # exact values, so to a relative 1e-12).
+    for k in range(len(rows)):
+        mine = (r["light"] == s["light"][k]) & (r["model"] == s["model"][k]) & \
+            (r["polygon"] == s["polygon"][k])
+        assert np.isclose(r["area"][mine & (r["cls"] == 1)].sum(), s["lit_area"][k],
+                          rtol=1e-12, atol=1e-9)
+    one = umbra.load_scene(path).footprints(lights=[1])
+    assert set(one["regions"]["light"].tolist()) == {1}
+    with pytest.raises(ValueError, match="light"):
+        umbra.load_scene(path).footprints(lights=[7])
