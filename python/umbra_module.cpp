@@ -29,6 +29,9 @@ namespace umbra::python {
 namespace {
 
 /// A loaded scene and, built on first use, its exact index (the oracle's).
+/// The index refers to scene_, so a PyScene is moved only before its first
+/// in_shadow (pybind11 moves it once, into its holder, when load_scene
+/// returns); the index is made with the GIL held, so by one thread.
 class PyScene {
  public:
   explicit PyScene(geometry::Scene scene) : scene_(std::move(scene)) {}
