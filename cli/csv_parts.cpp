@@ -1,4 +1,5 @@
 #include <cli/csv_parts.h>
+#include <cli/part_times.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
 
@@ -11,8 +12,9 @@ namespace umbra::cli {
 namespace fs = std::filesystem;
 
 std::string join_csv_parts(const std::vector<fs::path>& parts) {
-  std::string out, header, last_time;
+  std::string out, header;
   bool timed = false;
+  PartTimes times("rows");
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const std::string text = util::read_input_file(parts[k], "table part");
     const std::size_t eol = text.find('\n');
@@ -28,21 +30,13 @@ std::string join_csv_parts(const std::vector<fs::path>& parts) {
           parts[k].string(),
           fmt::format("its header is not {}'s: parts of another table", parts[0].string()));
     }
-    // A timed table's rows: times never go back, and each part starts after
-    // the previous one ended (ISO 8601 texts in one offset sort as text).
+    // A timed table's rows: the time is each row's first column.
     if (timed) {
-      bool part_start = true;
+      times.start_part();
       for (std::size_t pos = eol + 1; pos < text.size();) {
         const std::size_t end = text.find('\n', pos);
         const std::size_t comma = text.find(',', pos);
-        const std::string time = text.substr(pos, comma - pos);
-        if (part_start ? !last_time.empty() && time <= last_time : time < last_time)
-          throw util::InputError(parts[k].string(),
-                                 fmt::format("time {} is not after {}, the previous rows': give "
-                                             "the parts in shard order, each once",
-                                             time, last_time));
-        last_time = time;
-        part_start = false;
+        times.next(std::string_view(text).substr(pos, comma - pos), parts[k]);
         if (end == std::string::npos) break;
         pos = end + 1;
       }

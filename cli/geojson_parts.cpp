@@ -1,4 +1,6 @@
 #include <cli/geojson_parts.h>
+#include <cli/part_times.h>
+#include <geometry/export/footprint_geojson.h>
 #include <geometry/io/json_depth.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
@@ -19,11 +21,13 @@ using util::InputError;
 namespace {
 
 using Receiver = std::tuple<std::uint32_t, std::uint32_t, std::int32_t>;
+using geometry::GeoJsonCounts;
 
 /// What footprint_geojson writes before the counts and after the list.
 constexpr std::string_view kStart = R"({"type":"FeatureCollection","umbra":{)";
 constexpr std::string_view kCounts = R"(,"features":)";
 constexpr std::string_view kHeaderEnd = R"(]},"features":[)";
+constexpr std::string_view kCollection = R"(},"features":[)";  ///< after the counts
 constexpr std::string_view kFeature = R"({"type":"Feature","properties":{)";
 constexpr std::string_view kTime = R"({"type":"Feature","properties":{"time":")";
 // A FeatureCollection of polygons nests 7 deep (collection, features,
@@ -32,25 +36,9 @@ constexpr std::size_t kMaxDepth = 8;
 
 struct Part {
   std::string prefix;  ///< the header up to the counts: site and pipeline
-  std::uint64_t features = 0, regions_skipped = 0;
-  std::set<Receiver> skipped;
+  GeoJsonCounts counts;
   std::vector<std::string_view> lines;  ///< each Feature, without separator
 };
-
-/// The header from the counts on: what footprint_geojson writes for them.
-std::string counts_text(std::uint64_t features, std::uint64_t regions_skipped,
-                        const std::set<Receiver>& skipped) {
-  std::string out =
-      fmt::format(R"({}{},"regions_skipped":{},"receivers_skipped":{},"skipped_receivers":[)",
-                  kCounts, features, regions_skipped, skipped.size());
-  bool first = true;
-  for (const auto& [model, polygon, triangle] : skipped) {
-    out += fmt::format("{}[{},{},{}]", first ? "" : ",", model, polygon, triangle);
-    first = false;
-  }
-  out += kHeaderEnd;
-  return out;
-}
 
 Part read_part(const fs::path& path, const std::string& text) {
   const std::string where = path.string();
@@ -90,9 +78,10 @@ Part read_part(const fs::path& path, const std::string& text) {
       throw refuse(fmt::format("\"umbra\".\"{}\" is not a count", key));
     return umbra[key].get<std::uint64_t>();
   };
-  part.features = count("features");
-  part.regions_skipped = count("regions_skipped");
-  const std::uint64_t receivers = count("receivers_skipped");
+  GeoJsonCounts& c = part.counts;
+  c.features = count("features");
+  c.regions_skipped = count("regions_skipped");
+  c.receivers_skipped = count("receivers_skipped");
   if (!umbra.contains("skipped_receivers") || !umbra["skipped_receivers"].is_array())
     throw refuse("\"umbra\" lists no skipped_receivers");
   for (const nlohmann::json& r : umbra["skipped_receivers"]) {
@@ -104,16 +93,16 @@ Part read_part(const fs::path& path, const std::string& text) {
     if (!ok) throw refuse("a skipped receiver is not [model, polygon, triangle]");
     const Receiver key{r[0].get<std::uint32_t>(), r[1].get<std::uint32_t>(),
                        r[2].get<std::int32_t>()};
-    if (!part.skipped.empty() && !(*part.skipped.rbegin() < key))
+    if (!c.skipped.empty() && !(c.skipped.back() < key))
       throw refuse("its skipped receivers are not sorted and distinct");
-    part.skipped.insert(key);
+    c.skipped.push_back(key);
   }
-  if (part.skipped.size() != receivers)
-    throw refuse(
-        fmt::format("receivers_skipped is {}, its list holds {}", receivers, part.skipped.size()));
+  if (c.skipped.size() != c.receivers_skipped)
+    throw refuse(fmt::format("receivers_skipped is {}, its list holds {}", c.receivers_skipped,
+                             c.skipped.size()));
   // The header must be exactly what the writer gives these counts: the
   // merged header is rebuilt from them.
-  if (header.substr(counts) != counts_text(part.features, part.regions_skipped, part.skipped))
+  if (header.substr(counts) != geometry::geojson_counts_text(c) + std::string(kCollection))
     throw refuse("its header is not the one umbra writes");
 
   for (std::size_t k = 1; k + 1 < lines.size(); ++k) {
@@ -126,9 +115,9 @@ Part read_part(const fs::path& path, const std::string& text) {
     if (!line.starts_with(kFeature)) throw refuse(fmt::format("line {} is not a Feature", k + 1));
     part.lines.push_back(line);
   }
-  if (part.lines.size() != part.features || doc["features"].size() != part.features)
-    throw refuse(fmt::format("its header counts {} features, it holds {}", part.features,
-                             part.lines.size()));
+  if (part.lines.size() != c.features || doc["features"].size() != c.features)
+    throw refuse(
+        fmt::format("its header counts {} features, it holds {}", c.features, part.lines.size()));
   return part;
 }
 
@@ -149,9 +138,9 @@ std::string join_geojson_parts(const std::vector<fs::path>& paths) {
     texts.push_back(util::read_input_file(path, "GeoJSON part"));
     parts.push_back(read_part(path, texts.back()));
   }
-  std::uint64_t features = 0, regions_skipped = 0;
-  std::set<Receiver> skipped;
-  std::string_view last_time;
+  GeoJsonCounts all;
+  std::set<Receiver> skipped;  // the distinct ones over every part
+  PartTimes times("features");
   std::string body;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const Part& part = parts[k];
@@ -159,27 +148,24 @@ std::string join_geojson_parts(const std::vector<fs::path>& paths) {
       throw InputError(paths[k].string(),
                        fmt::format("its site or pipeline is not {}'s: a part of another series",
                                    paths[0].string()));
-    bool part_start = true;
+    times.start_part();
     for (const std::string_view line : part.lines) {
       const std::string_view time = time_of(line);
       if (time.empty())
         throw InputError(paths[k].string(),
                          "a Feature has no time: not a part of a sun series (--sun-times)");
-      if (part_start ? !last_time.empty() && time <= last_time : time < last_time)
-        throw InputError(paths[k].string(),
-                         fmt::format("time {} is not after {}, the previous features': give the "
-                                     "parts in shard order, each once",
-                                     time, last_time));
-      last_time = time;
-      part_start = false;
+      times.next(time, paths[k]);
       body += body.empty() ? "\n" : ",\n";
       body += line;
     }
-    features += part.features;
-    regions_skipped += part.regions_skipped;
-    skipped.insert(part.skipped.begin(), part.skipped.end());
+    all.features += part.counts.features;
+    all.regions_skipped += part.counts.regions_skipped;
+    skipped.insert(part.counts.skipped.begin(), part.counts.skipped.end());
   }
-  std::string out = parts[0].prefix + counts_text(features, regions_skipped, skipped);
+  all.skipped.assign(skipped.begin(), skipped.end());
+  all.receivers_skipped = all.skipped.size();
+  std::string out = parts[0].prefix + geometry::geojson_counts_text(all);
+  out += kCollection;
   out += body;
   out += "\n]}\n";
   return out;

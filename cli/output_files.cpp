@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <system_error>
@@ -18,12 +17,6 @@ namespace fs = std::filesystem;
 using util::InputError;
 
 namespace {
-
-std::string lowercase(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 /// Whether `a` and `b` name one file: the same canonical path (for outputs
 /// that do not exist yet), or the same device and inode.
@@ -41,10 +34,6 @@ bool same_file(const fs::path& a, const fs::path& b) {
 }
 
 }  // namespace
-
-std::string lowercase_extension(const fs::path& path) {
-  return lowercase(path.extension().string());
-}
 
 void check_output_path(const fs::path& path, std::initializer_list<std::string_view> extensions) {
   if (extensions.size() > 0) {

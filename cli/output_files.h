@@ -3,6 +3,7 @@
 // never ends in "unknown extension"), and text files written whole or not at
 // all, like the images of raster/image_io.h.
 #include <geometry/scene.h>
+#include <util/file_names.h>
 
 #include <filesystem>
 #include <initializer_list>
@@ -12,8 +13,7 @@
 
 namespace umbra::cli {
 
-/// The path's extension in lower case (".EXR" -> ".exr").
-std::string lowercase_extension(const std::filesystem::path& path);
+using util::lowercase_extension;
 
 /// Throws util::InputError naming `path` when its extension is not one of
 /// `extensions` (compared case-insensitively, each with its dot: ".png"), or

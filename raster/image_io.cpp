@@ -3,6 +3,7 @@
 #include <raster/image_io.h>
 #include <raster/image_write.h>
 #include <raster/library_versions.h>
+#include <util/file_names.h>
 #include <util/input_error.h>
 #include <util/input_file.h>
 
@@ -172,7 +173,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
   // .exr used to be opened as a PNG and fail with "no shadow.0".
   const char* format = content_format(bytes);
   if (std::string_view(format) != "OpenEXR") {
-    const bool named_exr = image_write::lowercase_extension(name) == ".exr";
+    const bool named_exr = util::lowercase_extension(name) == ".exr";
     throw util::InputError(
         where, fmt::format("is {} by its content{}; validate needs the shadow.0, shadow.1, ... "
                            "channels of an OpenEXR file from `umbra render -o NAME.exr`",

@@ -2,12 +2,11 @@
 #include <raster/image_write.h>
 #include <raster/shading.h>
 #include <util/atomic_files.h>
+#include <util/file_names.h>
 #include <util/input_error.h>
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -16,15 +15,8 @@ namespace umbra::raster::image_write {
 
 namespace fs = std::filesystem;
 
-std::string lowercase_extension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 ImageKind kind_of(const fs::path& path) {
-  const std::string ext = lowercase_extension(path);
+  const std::string ext = util::lowercase_extension(path);
   if (ext == ".png") return ImageKind::png;
   if (ext == ".exr") return ImageKind::exr;
   throw util::InputError(

@@ -17,9 +17,6 @@ namespace umbra::raster::image_write {
 
 enum class ImageKind { png, exr };
 
-/// The path's extension in lower case ("" when it has none).
-std::string lowercase_extension(const std::filesystem::path& path);
-
 /// The kind of image a path's extension names; throws util::InputError
 /// naming the path for any other extension.
 ImageKind kind_of(const std::filesystem::path& path);

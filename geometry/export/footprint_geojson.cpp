@@ -188,6 +188,17 @@ GeoJsonCounts footprint_geojson_counts(const Scene& scene, std::span<const GeoJs
                              [](const GeoJsonStep&, std::size_t, int) {});
 }
 
+std::string geojson_counts_text(const GeoJsonCounts& counts) {
+  std::string out = fmt::format(R"(,"features":{},"regions_skipped":{},"receivers_skipped":{},)"
+                                R"("skipped_receivers":[)",
+                                counts.features, counts.regions_skipped, counts.receivers_skipped);
+  for (std::size_t k = 0; k < counts.skipped.size(); ++k) {
+    const auto& [model, polygon, triangle] = counts.skipped[k];
+    out += fmt::format("{}[{},{},{}]", k ? "," : "", model, polygon, triangle);
+  }
+  return out + ']';
+}
+
 std::string footprint_geojson(const Scene& scene, std::span<const GeoJsonStep> steps,
                               GeoJsonCounts* counts_out) {
   const Site& site = require_site(scene);
@@ -213,15 +224,8 @@ std::string footprint_geojson(const Scene& scene, std::span<const GeoJsonStep> s
   out += R"(,"origin":)";
   append_vec(out, site.origin);
   out += R"(},"pipeline":)" + json_string(frame.pipeline());
-  out += R"(,"features":)" + std::to_string(counts.features);
-  out += R"(,"regions_skipped":)" + std::to_string(counts.regions_skipped);
-  out += R"(,"receivers_skipped":)" + std::to_string(counts.receivers_skipped);
-  out += R"(,"skipped_receivers":[)";
-  for (std::size_t k = 0; k < counts.skipped.size(); ++k) {
-    const auto& [model, polygon, triangle] = counts.skipped[k];
-    out += fmt::format("{}[{},{},{}]", k ? "," : "", model, polygon, triangle);
-  }
-  out += R"(]},"features":[)";
+  out += geojson_counts_text(counts);
+  out += R"(},"features":[)";
   out += features;
   out += "\n]}\n";
   return out;

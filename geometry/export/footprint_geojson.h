@@ -32,6 +32,13 @@ struct GeoJsonCounts {
   std::vector<std::tuple<std::uint32_t, std::uint32_t, std::int32_t>> skipped;
 };
 
+/// The counts as the collection's "umbra" member ends with them:
+/// `,"features":N,"regions_skipped":R,"receivers_skipped":S,
+/// "skipped_receivers":[[model,polygon,triangle],...]` (no spaces). Written
+/// by footprint_geojson and by `umbra merge` joining sharded parts, so that
+/// the two give the same bytes.
+std::string geojson_counts_text(const GeoJsonCounts& counts);
+
 /// A receiver piece (a planar polygon whole, triangle −1, or fan triangle
 /// `triangle` (v0, v_{t+1}, v_{t+2}) of a non-planar one) is **horizontal**
 /// when all its vertices are at the same height along `site.up`, decided
