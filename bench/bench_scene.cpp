@@ -1,6 +1,6 @@
 #include "bench_scene.h"
 
-#include <geometry/io/mesh_io.h>
+#include <umbra/geometry/io/mesh_io.h>
 
 #include <algorithm>
 #include <cmath>

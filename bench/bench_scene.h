@@ -1,7 +1,7 @@
 #pragma once
 // Benchmark scenes: a mesh set on a floor under N point lights, at a fixed
 // camera, built in code so that only the mesh file has to exist.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <filesystem>
 

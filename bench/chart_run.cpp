@@ -1,9 +1,8 @@
 #include "chart_run.h"
 
-#include <raster/image_io.h>
-#include <raster/methods/map_variants.h>
-
 #include <fmt/format.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/methods/map_variants.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,9 +1,9 @@
 #pragma once
 // One row of the speed/accuracy chart: a render method with one parameter
 // setting, timed over several runs and scored against the oracle.
-#include <geometry/scene.h>
-#include <raster/render.h>
-#include <raster/validate.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <string>
 #include <vector>

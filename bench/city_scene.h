@@ -3,7 +3,7 @@
 // blocks of box buildings on streets, lit by many street lights of small
 // reach. Each building is its own model, so a light's sphere of influence
 // decides which buildings cast volumes for it at all.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 

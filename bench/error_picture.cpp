@@ -1,6 +1,6 @@
 #include "error_picture.h"
 
-#include <raster/shading.h>
+#include <umbra/raster/shading.h>
 
 #include <algorithm>
 

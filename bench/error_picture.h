@@ -2,8 +2,8 @@
 // A render's mistakes drawn over its own picture, for docs and the chart's
 // --images: the beauty pass dimmed, and every checked sample the oracle
 // disagrees with painted by the kind of mistake.
-#include <raster/frame.h>
-#include <raster/validate.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/validate.h>
 
 #include <vector>
 

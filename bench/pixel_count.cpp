@@ -1,9 +1,9 @@
 #include "pixel_count.h"
 
-#include <geometry/box.h>
-#include <geometry/exact/polygon_surface.h>
-#include <raster/methods/shadow_map.h>
-#include <util/phase_clock.h>
+#include <umbra/geometry/box.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/util/phase_clock.h>
 
 #include <algorithm>
 #include <cmath>

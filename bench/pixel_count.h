@@ -4,8 +4,8 @@
 // polygon-ID buffer, as EnergyPlus's GPU shading and GIS tools do, and each
 // receiver's sunlit fraction taken as its visible texels over its area seen
 // from the sun.
-#include <geometry/footprint/footprint.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <vector>

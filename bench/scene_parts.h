@@ -1,7 +1,7 @@
 #pragma once
 // Building blocks of the procedural benchmark scenes: closed boxes and floor
 // quads with outward-facing polygons (counter-clockwise seen from outside).
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <string>
 

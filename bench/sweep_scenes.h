@@ -1,7 +1,7 @@
 #pragma once
 // The stability sweeps of the speed/accuracy chart: scene families in which
 // one parameter walks toward the place where some method breaks.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <string>
 #include <vector>

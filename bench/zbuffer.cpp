@@ -1,6 +1,6 @@
 #include "zbuffer.h"
 
-#include <geometry/sample_ray.h>
+#include <umbra/geometry/sample_ray.h>
 
 #include <algorithm>
 #include <cmath>

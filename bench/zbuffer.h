@@ -6,7 +6,7 @@
 // edge functions over its bounding box, keeping the nearest 1/depth.
 // Triangles with a vertex at or behind the eye plane are skipped (a real
 // z-buffer would clip them; the bench scenes have none).
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <vector>

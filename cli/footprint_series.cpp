@@ -4,18 +4,18 @@
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
 #include <cli/stats_json.h>
-#include <geometry/export/footprint_geojson.h>
-#include <geometry/export/sun_series_export.h>
-#include <geometry/footprint/sun_footprints.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/sun/sun_series.h>
-#include <util/atomic_files.h>
-#include <util/input_error.h>
-#include <util/phase_clock.h>
-#include <util/progress.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/export/footprint_geojson.h>
+#include <umbra/geometry/export/sun_series_export.h>
+#include <umbra/geometry/footprint/sun_footprints.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/sun/sun_series.h>
+#include <umbra/util/atomic_files.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/phase_clock.h>
+#include <umbra/util/progress.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -2,8 +2,8 @@
 // Output paths of the verbs: checked before any work starts (so a long render
 // never ends in "unknown extension"), and text files written whole or not at
 // all, like the images of raster/image_io.h.
-#include <geometry/scene.h>
-#include <util/file_names.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/util/file_names.h>
 
 #include <filesystem>
 #include <initializer_list>

@@ -1,5 +1,6 @@
 #include <cli/parse_checks.h>
-#include <util/input_error.h>
+
+#include <umbra/util/input_error.h>
 
 #include <charconv>
 #include <cmath>

@@ -2,7 +2,7 @@
 // A one-line progress bar on stderr for long renders: only when stderr is a
 // terminal, only once the work has taken more than a second, and erased
 // when it is done, so that pipes and logs never see it.
-#include <util/progress.h>
+#include <umbra/util/progress.h>
 
 #include <chrono>
 

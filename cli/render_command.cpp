@@ -6,15 +6,15 @@
 #include <cli/render_command.h>
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
-#include <raster/image_io.h>
-#include <raster/memory_estimate.h>
-#include <raster/methods/map_variants.h>
-#include <raster/render.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
-#include <util/phase_clock.h>
 
 #include <fmt/format.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/memory_estimate.h>
+#include <umbra/raster/methods/map_variants.h>
+#include <umbra/raster/render.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/input_file.h>
+#include <umbra/util/phase_clock.h>
 
 #include <charconv>
 #include <chrono>

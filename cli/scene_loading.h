@@ -1,7 +1,7 @@
 #pragma once
 // How the verbs load their scene: what each needs of it (a camera for render
 // and validate, none for volume) and the warnings every verb gives the same.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <filesystem>
 #include <string>

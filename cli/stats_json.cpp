@@ -1,7 +1,8 @@
 #include <cli/output_files.h>
 #include <cli/stats_json.h>
-#include <raster/methods/map_variants.h>
-#include <util/cpu_budget.h>
+
+#include <umbra/raster/methods/map_variants.h>
+#include <umbra/util/cpu_budget.h>
 
 #include <cstdio>
 

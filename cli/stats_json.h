@@ -2,11 +2,10 @@
 // The JSON the verbs print or write: render and volume statistics
 // (--stats-json) and validation reports (--json). Field names are documented
 // in docs/cli.md.
-#include <geometry/volumes/shadow_volume.h>
-#include <raster/render.h>
-#include <raster/validate.h>
-
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/volumes/shadow_volume.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <cstdint>
 #include <optional>

@@ -8,6 +8,9 @@ target_compile_options(umbra_options INTERFACE
   # FMA (it changes the sign of naive determinants on degenerate input), and
   # never -ffast-math. CGAL's own target adds -frounding-math for its filters.
   -ffp-contract=off)
+# The project's own folders (cli/, tests/, fuzz/, ...) are included from the
+# root: `#include <tests/support/work_dir.h>`. The libraries' headers go by
+# their installed names, `<umbra/geometry/scene.h>` (umbra_include_tree).
 target_include_directories(umbra_options INTERFACE ${PROJECT_SOURCE_DIR})
 
 # CI builds with warnings as errors (scripts/test.sh); a user's build of a
@@ -34,3 +37,26 @@ if(UMBRA_FUZZ)
     -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g)
   target_link_options(umbra_options INTERFACE -fsanitize=address,undefined)
 endif()
+
+# The libraries' headers are included as <umbra/geometry/...>,
+# <umbra/raster/...>, <umbra/util/...> in the tree as once installed, so a
+# consumer's own <geometry/...> never collides with umbra's. In the build
+# tree include/umbra/<folder> links to the source folder (the folders stay at
+# the top level, DESIGN.md's layout); installed, the headers are copied there.
+set(UMBRA_BUILD_INCLUDE_DIR ${PROJECT_BINARY_DIR}/include)
+file(MAKE_DIRECTORY ${UMBRA_BUILD_INCLUDE_DIR}/umbra)
+foreach(folder IN ITEMS util geometry raster)
+  file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${folder} ${UMBRA_BUILD_INCLUDE_DIR}/umbra/${folder} SYMBOLIC)
+endforeach()
+
+# What a library's interface carries to whoever links it, built here or
+# installed: its headers and the exactness flag (warnings stay ours).
+function(umbra_library_interface target)
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${UMBRA_BUILD_INCLUDE_DIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  # Exactness, not style: the inline float code in the headers (interval
+  # bounds, error bounds proved for separate roundings) is proved for
+  # uncontracted arithmetic, so a consumer compiles it that way too.
+  target_compile_options(${target} PUBLIC -ffp-contract=off)
+  target_link_libraries(${target} PUBLIC $<BUILD_INTERFACE:umbra::options>)
+endfunction()

@@ -15,7 +15,8 @@
 // maps draws to ranges itself (no std:: distributions, whose output differs
 // between standard libraries).
 #include <fuzz/light_placement.h>
-#include <geometry/scene.h>
+
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <string>

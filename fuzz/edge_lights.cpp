@@ -1,5 +1,6 @@
 #include <fuzz/edge_lights.h>
-#include <geometry/exact/predicates.h>
+
+#include <umbra/geometry/exact/predicates.h>
 
 #include <vector>
 

@@ -7,7 +7,8 @@
 // real-model sweep share them.
 #include <fuzz/light_placement.h>
 #include <fuzz/splitmix64.h>
-#include <geometry/scene.h>
+
+#include <umbra/geometry/scene.h>
 
 #include <optional>
 #include <span>

@@ -5,8 +5,9 @@
 // so that small ones also get the closed-volume check (loader_promises.h).
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/io/cityjson_reader.h>
-#include <util/input_error.h>
+
+#include <umbra/geometry/io/cityjson_reader.h>
+#include <umbra/util/input_error.h>
 
 #include <string_view>
 

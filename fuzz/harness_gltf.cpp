@@ -6,8 +6,9 @@
 // parse_gltf_polygon_soup (a JSON scene's "mesh": "x.glb").
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/io/gltf_scene.h>
-#include <util/input_error.h>
+
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/util/input_error.h>
 
 #include <string_view>
 

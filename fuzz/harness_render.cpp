@@ -4,8 +4,9 @@
 #include <fuzz/harness.h>
 #include <fuzz/scene_decoder.h>
 #include <fuzz/scene_export.h>
-#include <raster/render.h>
-#include <raster/validate.h>
+
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 using namespace umbra;
 

@@ -4,8 +4,9 @@
 // the scene is small, must form a closed weighted cycle (loader_promises.h).
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/io/scene_json.h>
-#include <util/input_error.h>
+
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/input_error.h>
 
 #include <string_view>
 

@@ -16,8 +16,9 @@
 //   neither changes under exact rescaling.
 #include <fuzz/byte_reader.h>
 #include <fuzz/harness.h>
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/volumes/twist.h>
+
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/volumes/twist.h>
 
 #include <array>
 #include <cmath>

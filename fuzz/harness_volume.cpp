@@ -5,8 +5,9 @@
 #include <fuzz/harness.h>
 #include <fuzz/scene_decoder.h>
 #include <fuzz/scene_export.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/closure_check.h>
+
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/closure_check.h>
 
 using namespace umbra;
 

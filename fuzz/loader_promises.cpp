@@ -1,9 +1,10 @@
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/closure_check.h>
+
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/closure_check.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // coordinates within the exact range, polygons of 3 to kMaxPolygonVertices
 // in-range indices, polygon names none or one per polygon; and, for small scenes, shadow volumes
 // that form a closed weighted cycle. Aborts through UMBRA_FUZZ_CHECK on a failure.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 namespace umbra::fuzz {
 

@@ -1,5 +1,6 @@
 #include <fuzz/mesh_catalog.h>
-#include <util/input_error.h>
+
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <cctype>

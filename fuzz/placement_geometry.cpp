@@ -1,6 +1,7 @@
 #include <fuzz/placement_geometry.h>
 #include <fuzz/splitmix64.h>
-#include <geometry/exact/predicates.h>
+
+#include <umbra/geometry/exact/predicates.h>
 
 #include <bit>
 #include <cmath>

@@ -4,7 +4,7 @@
 // a "midpoint" computed in doubles is usually a hair off its edge, and a
 // light there is exactly the case issue 16 found broken, so the generators
 // record which of the two each placement really is.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <optional>

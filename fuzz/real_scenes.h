@@ -6,7 +6,8 @@
 // mesh's vertices and its file name, never on which other meshes a run
 // includes, so a failure's recipe names one file.
 #include <fuzz/degenerate_scenes.h>
-#include <geometry/scene.h>
+
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,8 @@
 #include <fuzz/scene_check.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/closure_check.h>
-#include <raster/validate.h>
+
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/closure_check.h>
+#include <umbra/raster/validate.h>
 
 #include <chrono>
 #include <exception>

@@ -6,8 +6,8 @@
 // is a refusal: caught and reported with its message, so that a sweep goes
 // on past it and counts it. Refusing beats a wrong picture, but it is a
 // failure all the same.
-#include <geometry/scene.h>
-#include <raster/render.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/render.h>
 
 #include <cstdint>
 #include <functional>

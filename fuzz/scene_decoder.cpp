@@ -1,5 +1,6 @@
 #include <fuzz/scene_decoder.h>
-#include <geometry/sample_ray.h>
+
+#include <umbra/geometry/sample_ray.h>
 
 #include <array>
 #include <cmath>

@@ -1,14 +1,14 @@
 #include <fuzz/scene_export.h>
-#include <geometry/exact/visible_surface.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/sample_ray.h>
-#include <raster/image_io.h>
-#include <util/input_error.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/util/input_error.h>
 
 #include <bit>
 #include <fstream>

@@ -1,7 +1,8 @@
 #include <cli/parse_checks.h>
 #include <fuzz/junit_report.h>
 #include <fuzz/summary_files.h>
-#include <util/atomic_files.h>
+
+#include <umbra/util/atomic_files.h>
 
 namespace umbra::cli {
 

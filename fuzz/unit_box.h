@@ -6,8 +6,8 @@
 // the error term of TwoSum). Coplanar faces stay coplanar, collinear edges
 // collinear, duplicated vertices bit-identical: the degeneracies the sweep
 // exists to test are the file's own, not rounding's.
-#include <geometry/oracle/bvh.h>
-#include <geometry/vec3.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <vector>

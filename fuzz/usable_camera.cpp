@@ -1,5 +1,6 @@
 #include <fuzz/usable_camera.h>
-#include <geometry/sample_ray.h>
+
+#include <umbra/geometry/sample_ray.h>
 
 namespace umbra::fuzz {
 

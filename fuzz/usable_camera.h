@@ -3,7 +3,7 @@
 // whose frame underflows in doubles gives NaN rays in memory and is refused
 // when read back from its exported file, so a "finding" on it is neither
 // real nor replayable.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 namespace umbra::fuzz {
 

@@ -1,4 +1,4 @@
-#include <geometry/box.h>
+#include <umbra/geometry/box.h>
 
 #include <algorithm>
 

@@ -2,8 +2,8 @@
 // Axis-aligned boxes in doubles, and the two boxes of a scene that umbra
 // needs: what views, volumes and float slack must contain. Boxes only pick
 // candidates or set scales; exact predicates decide.
-#include <geometry/scene.h>
-#include <geometry/vec3.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/vec3.h>
 
 #include <algorithm>
 

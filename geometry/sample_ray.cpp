@@ -1,4 +1,4 @@
-#include <geometry/sample_ray.h>
+#include <umbra/geometry/sample_ray.h>
 
 #include <numbers>
 

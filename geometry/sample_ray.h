@@ -1,7 +1,7 @@
 #pragma once
 // Sample rays exactly as DESIGN.md defines them; shared by every render
 // method and by the validator, so that all of them look at the same points.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 namespace umbra::geometry {
 

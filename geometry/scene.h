@@ -2,7 +2,7 @@
 // The scene as every part of umbra sees it after loading: world-space
 // coordinates (transforms already applied, in doubles), validated values.
 // Field meanings follow ../shared/DESIGN.md and docs/scene-format.md.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <cstdint>
 #include <filesystem>

@@ -3,19 +3,18 @@
 // shadow volumes, ask the exact oracle, partition receivers into exact
 // footprints; errors become umbra.InputError with
 // umbra's one-line message. docs/python.md.
-#include <geometry/exact/visible_surface.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/sample_ray.h>
-#include <geometry/volumes/builder.h>
-#include <raster/render.h>
-#include <util/input_error.h>
-
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/raster/render.h>
+#include <umbra/util/input_error.h>
 
 #include <cmath>
 #include <memory>

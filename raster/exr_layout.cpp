@@ -1,6 +1,5 @@
-#include <raster/exr_layout.h>
-
 #include <fmt/format.h>
+#include <umbra/raster/exr_layout.h>
 
 #include <charconv>
 

@@ -1,5 +1,5 @@
-#include <raster/frame.h>
-#include <util/parallel_for.h>
+#include <umbra/raster/frame.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <cstdint>

@@ -1,9 +1,9 @@
 #pragma once
 // What every render method produces: the beauty pass and the AOVs of
 // DESIGN.md, as plain buffers, row-major from the top-left pixel.
-#include <geometry/scene.h>
-#include <raster/light_windows.h>
-#include <util/huge_pages.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/util/huge_pages.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -3,9 +3,8 @@
 // being static), in ../lib/umbra from there (an installed tree), and where
 // the build put it (UMBRA_IMAGE_CODEC_BUILD_PATH). Never unloaded: OpenImageIO
 // keeps threads and caches that outlive any point where dlclose would be safe.
-#include <raster/image_codec.h>
-
 #include <dlfcn.h>
+#include <umbra/raster/image_codec.h>
 
 #include <filesystem>
 #include <mutex>

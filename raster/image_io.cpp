@@ -1,13 +1,12 @@
-#include <raster/exr_layout.h>
-#include <raster/image_codec.h>
-#include <raster/image_io.h>
-#include <raster/image_write.h>
-#include <raster/library_versions.h>
-#include <util/file_names.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
-
 #include <fmt/format.h>
+#include <umbra/raster/exr_layout.h>
+#include <umbra/raster/image_codec.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/image_write.h>
+#include <umbra/raster/library_versions.h>
+#include <umbra/util/file_names.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/input_file.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // The one file that touches image files (through OpenImageIO).
-#include <raster/frame.h>
+#include <umbra/raster/frame.h>
 
 #include <cstdint>
 #include <filesystem>

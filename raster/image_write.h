@@ -3,9 +3,9 @@
 // tile_merge.cpp (a frame streamed from its tiles), so that both give the
 // same bytes: the EXR header and block height, the PNG header and 8-bit
 // values, and the all-or-nothing write. Internal to raster/.
-#include <raster/frame.h>
-#include <raster/image_codec.h>
-#include <raster/image_io.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/image_codec.h>
+#include <umbra/raster/image_io.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // The versions of the libraries umbra::raster is built with and runs with
 // (`umbra --version`). OpenImageIO is queried behind the image I/O file and
 // Embree behind raster/methods/, as everything else that includes them.
-#include <geometry/library_versions.h>
+#include <umbra/geometry/library_versions.h>
 
 namespace umbra::raster {
 

@@ -1,5 +1,5 @@
-#include <geometry/exact/coordinate_range.h>
-#include <raster/light_windows.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/raster/light_windows.h>
 
 #include <algorithm>
 #include <cmath>

@@ -11,8 +11,8 @@
 // proven margin (light_windows.cpp): every pixel whose sample point H could
 // satisfy |H - L| <= light_end lies inside it. Lights without a reach
 // (directional, unlimited point lights) have the whole image.
-#include <geometry/sample_ray.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
-#include <geometry/volumes/model_reach.h>
-#include <raster/light_windows.h>
-#include <raster/memory_estimate.h>
-#include <raster/methods/shadow_lookup.h>
+#include <umbra/geometry/volumes/model_reach.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/raster/memory_estimate.h>
+#include <umbra/raster/methods/shadow_lookup.h>
 
 #include <algorithm>
 #include <vector>

@@ -8,8 +8,8 @@
 // scenes of data/scenes (docs/cli.md, "Memory"); it is meant to be within a
 // factor of about 1.5, enough to refuse a render that cannot fit long
 // before it starts, not to budget the last megabyte.
-#include <geometry/scene.h>
-#include <raster/render.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/render.h>
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
-#include <geometry/oracle/transmittance.h>
-#include <geometry/oracle/visible_fraction.h>
-#include <raster/pixel_sample.h>
-#include <raster/shading.h>
+#include <umbra/geometry/oracle/transmittance.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
+#include <umbra/raster/pixel_sample.h>
+#include <umbra/raster/shading.h>
 
 namespace umbra::raster {
 

@@ -1,11 +1,11 @@
 #pragma once
 // One decided sample, whichever method decided it, and how it lands in the
 // frame: the beauty pass shaded from its classes, and every AOV.
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/oracle/visible_fraction.h>
-#include <geometry/sample_ray.h>
-#include <raster/frame.h>
-#include <raster/shading.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/shading.h>
 
 #include <cstdint>
 #include <span>

@@ -1,13 +1,12 @@
-#include <geometry/oracle/scene_index.h>
-#include <geometry/volumes/contour.h>
-#include <geometry/volumes/model_tables.h>
-#include <raster/methods/float_range.h>
-#include <raster/methods/render_methods.h>
-#include <raster/render.h>
-#include <raster/supersample.h>
-#include <util/input_error.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/volumes/contour.h>
+#include <umbra/geometry/volumes/model_tables.h>
+#include <umbra/raster/methods/float_range.h>
+#include <umbra/raster/methods/render_methods.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/supersample.h>
+#include <umbra/util/input_error.h>
 
 #include <cmath>
 #include <stdexcept>

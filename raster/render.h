@@ -1,8 +1,8 @@
 #pragma once
 // One entry point for every render method.
-#include <geometry/scene.h>
-#include <raster/frame.h>
-#include <util/progress.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/frame.h>
+#include <umbra/util/progress.h>
 
 #include <cstdint>
 #include <optional>

@@ -1,4 +1,4 @@
-#include <raster/shading.h>
+#include <umbra/raster/shading.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Shading of a visible sample: ambient plus Lambert per light with Bergeron's
 // falloff, added only for lights that reach the sample.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <span>

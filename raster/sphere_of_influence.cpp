@@ -1,5 +1,5 @@
-#include <geometry/exact/predicates.h>
-#include <raster/sphere_of_influence.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/raster/sphere_of_influence.h>
 
 #include <algorithm>
 #include <cmath>

@@ -8,10 +8,10 @@
 // first two); where the sphere cuts the surface, the exact predicate decides
 // each sample. The same class for every method that renders from the
 // scanline's visible surface.
-#include <geometry/exact/visible_surface.h>
-#include <geometry/sample_ray.h>
-#include <geometry/scene.h>
-#include <raster/scanline/scanline.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/scanline/scanline.h>
 
 #include <atomic>
 #include <cstdint>

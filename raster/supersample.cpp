@@ -1,4 +1,4 @@
-#include <raster/supersample.h>
+#include <umbra/raster/supersample.h>
 
 #include <algorithm>
 #include <stdexcept>

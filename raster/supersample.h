@@ -5,7 +5,7 @@
 // DESIGN.md (2·(s·i + (s-1)/2 + 0.5) / (s·w) is the same real number as
 // 2·(i + 0.5) / w, so it rounds to the same double), hence the AOVs are taken
 // from it unchanged and `umbra validate` scores the pixel centres as always.
-#include <raster/frame.h>
+#include <umbra/raster/frame.h>
 
 namespace umbra::raster {
 

@@ -1,14 +1,13 @@
 // umbra validate: every checked pixel's shadow.<i> against the oracle.
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/oracle/transmittance.h>
-#include <geometry/oracle/visible_fraction.h>
-#include <raster/frame.h>
-#include <raster/light_windows.h>
-#include <raster/validate.h>
-#include <util/input_error.h>
-#include <util/parallel_for.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/transmittance.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/raster/validate.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>

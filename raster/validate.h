@@ -1,9 +1,9 @@
 #pragma once
 // Compares a render's shadow.<i> AOVs with the exact oracle.
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/scene.h>
-#include <raster/image_io.h>
-#include <util/progress.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/util/progress.h>
 
 #include <cstdint>
 #include <optional>

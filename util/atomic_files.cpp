@@ -1,9 +1,8 @@
-#include <util/atomic_files.h>
-#include <util/input_error.h>
-#include <util/temporary_files.h>
-
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <umbra/util/atomic_files.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/temporary_files.h>
 #include <unistd.h>
 
 #include <cerrno>

@@ -1,6 +1,5 @@
-#include <util/cpu_budget.h>
-
 #include <sched.h>
+#include <umbra/util/cpu_budget.h>
 
 #include <algorithm>
 #include <cmath>

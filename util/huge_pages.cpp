@@ -1,4 +1,4 @@
-#include <util/huge_pages.h>
+#include <umbra/util/huge_pages.h>
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,5 +1,4 @@
-#include <util/temporary_files.h>
-
+#include <umbra/util/temporary_files.h>
 #include <unistd.h>
 
 #include <array>

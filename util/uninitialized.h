@@ -5,7 +5,7 @@
 // them first on one thread is wasted time; untouched, their pages are also
 // first touched by the thread that fills them. Large ones take huge pages
 // (huge_pages.h).
-#include <util/huge_pages.h>
+#include <umbra/util/huge_pages.h>
 
 #include <memory>
 #include <type_traits>

@@ -1,8 +1,7 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/exact_arithmetic.h>
-
 #include <CGAL/Gmpq.h>
 #include <gmp.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/exact_arithmetic.h>
 
 #include <algorithm>
 #include <array>

@@ -12,7 +12,7 @@
 //
 // They build the far ends of shadow volumes (geometry/volumes/sphere_ends.h)
 // and place samples on their planes; no decision is taken on their results.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 namespace umbra::geometry {
 

@@ -8,7 +8,7 @@
 // 2^1004, and the far ends, a factor of at most a few times the diagonal
 // beyond, stay below 2^1010: far from overflow (2^1024). A coordinate of
 // ~1.34e154 (2^512) already squares to infinity.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <algorithm>
 #include <cmath>

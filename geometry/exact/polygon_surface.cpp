@@ -1,5 +1,5 @@
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/exact/predicates.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/exact/predicates.h>
 
 namespace umbra::geometry {
 

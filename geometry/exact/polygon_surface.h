@@ -11,7 +11,7 @@
 // nothing. A polygon whose vertices are all collinear, or whose fan
 // triangles all have zero area (a vertex repeated: (a, b, a, c)), has no
 // surface at all: its shape is `degenerate`.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <array>
 #include <cstdint>

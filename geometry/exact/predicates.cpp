@@ -1,7 +1,6 @@
-#include <geometry/exact/exact_arithmetic.h>
-#include <geometry/exact/predicates.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <umbra/geometry/exact/exact_arithmetic.h>
+#include <umbra/geometry/exact/predicates.h>
 
 namespace umbra::geometry {
 

@@ -11,7 +11,7 @@
 // direction (w = 0). A directional light travelling along D is the point at
 // infinity in direction -D; a sample ray's direction d is the point at
 // infinity the ray runs towards.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <cstdint>
 #include <span>

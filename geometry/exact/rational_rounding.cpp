@@ -1,6 +1,5 @@
-#include <geometry/exact/rational_rounding.h>
-
 #include <mpfr.h>
+#include <umbra/geometry/exact/rational_rounding.h>
 
 namespace umbra::geometry {
 

@@ -2,7 +2,7 @@
 // it never construct it) or a finite point; both are handled by one template
 // over a small adaptor that says how to ask which side of a plane the start
 // lies on, and the same at the limit ε = 0 where boundaries are judged.
-#include <geometry/exact/segment_crossing.h>
+#include <umbra/geometry/exact/segment_crossing.h>
 
 #include <algorithm>
 

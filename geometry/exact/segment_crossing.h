@@ -3,8 +3,8 @@
 // number of times, and does it touch the polygon (an edge, a vertex, its
 // plane)? The one test behind the oracle (from a sample point P = H - ε·d)
 // and behind the eye's starting counts (from a finite point).
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/scene_index.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/scene_index.h>
 
 namespace umbra::geometry {
 

@@ -1,5 +1,5 @@
-#include <geometry/exact/predicates.h>
-#include <geometry/exact/visible_surface.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/exact/visible_surface.h>
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The first surface a sample ray meets, decided exactly.
-#include <geometry/oracle/scene_index.h>
-#include <geometry/sample_ray.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/sample_ray.h>
 
 #include <optional>
 

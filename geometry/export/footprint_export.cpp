@@ -1,16 +1,16 @@
 // Footprints to PLY, OBJ (+ MTL) and CSV (docs/footprints.md). PLY bytes and
 // OBJ numbers come from mesh_text.h for the reason given in
 // volume_export.cpp: double positions that read back bit-identical.
-#include <geometry/export/csv_text.h>
-#include <geometry/export/footprint_export.h>
-#include <geometry/export/footprint_geojson.h>
-#include <geometry/export/footprint_gltf.h>
-#include <geometry/export/indexed_faces.h>
-#include <geometry/export/mesh_text.h>
-#include <geometry/export/obj_materials.h>
-#include <geometry/io/mesh_lexer.h>
-#include <util/atomic_files.h>
-#include <util/input_error.h>
+#include <umbra/geometry/export/csv_text.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/export/footprint_geojson.h>
+#include <umbra/geometry/export/footprint_gltf.h>
+#include <umbra/geometry/export/indexed_faces.h>
+#include <umbra/geometry/export/mesh_text.h>
+#include <umbra/geometry/export/obj_materials.h>
+#include <umbra/geometry/io/mesh_lexer.h>
+#include <umbra/util/atomic_files.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 #pragma once
 // Shadow footprints written for other tools (docs/footprints.md is the
 // reference for the layouts).
-#include <geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/footprint.h>
 
 #include <filesystem>
 #include <optional>

@@ -1,8 +1,8 @@
 #pragma once
 // Shadow footprints on horizontal receivers as RFC 7946 GeoJSON, for GIS
 // tools (docs/sun.md, "GeoJSON"; docs/footprints.md, "Files").
-#include <geometry/footprint/footprint.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <span>

@@ -3,9 +3,9 @@
 // attributes; and because the importers most tools use (assimp, Blender)
 // drop custom attributes, the light and class are also the structure:
 // a node, mesh and material per (light, class).
-#include <geometry/export/footprint_gltf.h>
-#include <geometry/export/gltf_buffer.h>
-#include <geometry/export/polygon_triangulation.h>
+#include <umbra/geometry/export/footprint_gltf.h>
+#include <umbra/geometry/export/gltf_buffer.h>
+#include <umbra/geometry/export/polygon_triangulation.h>
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 // Internal to geometry/export/footprint_export.cpp: the glTF layout of
 // footprints (docs/footprints.md "Files"). Include
 // <geometry/export/footprint_export.h>.
-#include <geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/footprint.h>
 
 #include <cstdint>
 #include <string>

@@ -5,10 +5,9 @@
 // iteration (tests/geometry/export/geodetic_frame_test.cpp; measured worst
 // 3.6e-13 degrees, 4e-8 m, and 3.2e-8 m of height); the doubles written
 // add 1e-14 degrees (a nanometre).
-#include <geometry/export/geodetic_frame.h>
-#include <geometry/export/mesh_text.h>
-
 #include <proj.h>
+#include <umbra/geometry/export/geodetic_frame.h>
+#include <umbra/geometry/export/mesh_text.h>
 
 #include <cmath>
 #include <stdexcept>

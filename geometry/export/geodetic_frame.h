@@ -14,8 +14,8 @@
 // height (it rises by d²/(2R), 8 cm at 1 km). PROJ then inverts the
 // topocentric conversion and the geocentric one (closed-form, no grids, no
 // network) and converts radians to degrees.
-#include <geometry/scene.h>
-#include <geometry/vec3.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/vec3.h>
 
 #include <memory>
 

@@ -1,5 +1,5 @@
-#include <geometry/export/gltf_buffer.h>
-#include <util/input_error.h>
+#include <umbra/geometry/export/gltf_buffer.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <array>

@@ -4,9 +4,8 @@
 // .gltf with the buffer as a base64 data URI, or a .glb. The volume writer
 // (gltf_writer.cpp) and the footprint writer (footprint_gltf.cpp) add
 // their meshes and nodes to the document themselves.
-#include <geometry/vec3.h>
-
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/vec3.h>
 
 #include <cstddef>
 #include <cstdint>

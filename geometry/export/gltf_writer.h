@@ -1,7 +1,7 @@
 #pragma once
 // Internal to geometry/export/volume_export.cpp: the glTF layout of exported shadow
 // volumes (docs/volume-export.md, "glTF"). Include <geometry/export/volume_export.h>.
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <string>
 

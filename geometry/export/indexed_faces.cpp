@@ -1,8 +1,7 @@
-#include <geometry/export/indexed_faces.h>
-#include <geometry/io/position_welder.h>
-
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
+#include <umbra/geometry/export/indexed_faces.h>
+#include <umbra/geometry/io/position_welder.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -6,7 +6,7 @@
 // refuse (complex edge or vertex, a repeated vertex) gets its own copies of
 // its vertices. The file then loads face for face, without warnings, dropped
 // faces or duplicated vertices, into OpenMesh and its kin.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <cstdint>
 #include <functional>

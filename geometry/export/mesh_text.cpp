@@ -1,4 +1,4 @@
-#include <geometry/export/mesh_text.h>
+#include <umbra/geometry/export/mesh_text.h>
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // face properties, OBJ and OFF with the shortest text that reads back to
 // each double. The exporters (shadow volumes, footprints) add their own
 // attributes and sidecars.
-#include <geometry/export/indexed_faces.h>
+#include <umbra/geometry/export/indexed_faces.h>
 
 #include <cstdint>
 #include <span>

@@ -1,5 +1,5 @@
-#include <geometry/export/obj_materials.h>
-#include <util/input_error.h>
+#include <umbra/geometry/export/obj_materials.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <cctype>

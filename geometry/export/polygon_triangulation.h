@@ -4,7 +4,7 @@
 // nothing else (glTF footprints, geometry/export/), and surfaces with holes,
 // which umbra's polygons cannot hold (CityJSON, geometry/io/). Internal to
 // umbra_geometry.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <cstdint>

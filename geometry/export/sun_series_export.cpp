@@ -1,9 +1,8 @@
-#include <geometry/export/csv_text.h>
-#include <geometry/export/indexed_faces.h>
-#include <geometry/export/mesh_text.h>
-#include <geometry/export/sun_series_export.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/export/csv_text.h>
+#include <umbra/geometry/export/indexed_faces.h>
+#include <umbra/geometry/export/mesh_text.h>
+#include <umbra/geometry/export/sun_series_export.h>
 
 #include <array>
 #include <map>

@@ -2,9 +2,9 @@
 // What a series of suns writes (docs/sun.md "Time series"): the per-step
 // table of sunlit fractions, EnergyPlus's Schedule:File:Shading CSV and
 // the sun-hours footprint.
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/sun_footprints.h>
-#include <geometry/sun/sun_series.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/sun_footprints.h>
+#include <umbra/geometry/sun/sun_series.h>
 
 #include <cstdint>
 #include <span>

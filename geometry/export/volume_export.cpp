@@ -9,17 +9,16 @@
 // positions (mesh_text.h). OpenMesh still decides the connectivity
 // (indexed_faces.h), so that the file loads, face for face, into any
 // halfedge mesh — OpenMesh's reader included, with its custom properties.
-#include <geometry/export/gltf_writer.h>
-#include <geometry/export/indexed_faces.h>
-#include <geometry/export/mesh_text.h>
-#include <geometry/export/obj_materials.h>
-#include <geometry/export/volume_export.h>
-#include <geometry/export/volume_groups.h>
-#include <geometry/io/mesh_lexer.h>
-#include <util/atomic_files.h>
-#include <util/input_error.h>
-
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/export/gltf_writer.h>
+#include <umbra/geometry/export/indexed_faces.h>
+#include <umbra/geometry/export/mesh_text.h>
+#include <umbra/geometry/export/obj_materials.h>
+#include <umbra/geometry/export/volume_export.h>
+#include <umbra/geometry/export/volume_groups.h>
+#include <umbra/geometry/io/mesh_lexer.h>
+#include <umbra/util/atomic_files.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <array>

@@ -4,8 +4,8 @@
 // glTF; OBJ and glTF also group the faces by (light, type) with a named
 // material each, which importers that drop per-face data keep.
 // docs/volume-export.md is the reference for the layouts.
-#include <geometry/export/mesh_text.h>
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/export/mesh_text.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <filesystem>
 #include <optional>

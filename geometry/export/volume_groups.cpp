@@ -1,4 +1,4 @@
-#include <geometry/export/volume_groups.h>
+#include <umbra/geometry/export/volume_groups.h>
 
 #include <map>
 #include <utility>

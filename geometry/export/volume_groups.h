@@ -4,7 +4,7 @@
 // (light, face type), named like the footprint groups ("light<L>_lit"), with
 // one material each. The glTF writer (gltf_writer.cpp) and the OBJ writer
 // (volume_export.cpp) share the names, colours and order.
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <array>
 #include <cstddef>

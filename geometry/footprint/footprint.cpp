@@ -1,18 +1,17 @@
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/footprint_tables.h>
-#include <geometry/footprint/light_query.h>
-#include <geometry/footprint/receiver_partition.h>
-#include <geometry/footprint/receiver_plane.h>
-#include <geometry/footprint/receiver_units.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/contour.h>
-#include <util/parallel_for.h>
-#include <util/phase_clock.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/footprint_tables.h>
+#include <umbra/geometry/footprint/light_query.h>
+#include <umbra/geometry/footprint/receiver_partition.h>
+#include <umbra/geometry/footprint/receiver_plane.h>
+#include <umbra/geometry/footprint/receiver_units.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/contour.h>
+#include <umbra/util/parallel_for.h>
+#include <umbra/util/phase_clock.h>
 
 #include <algorithm>
 #include <stdexcept>

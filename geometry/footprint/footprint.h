@@ -11,7 +11,7 @@
 // segment from P to L crosses some shadow-casting polygon's surface an odd
 // number of times. A flat receiver therefore never shadows its own points;
 // a non-planar one's other fan triangles may.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <optional>

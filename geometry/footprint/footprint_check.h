@@ -2,8 +2,8 @@
 // A footprint file judged against the exact oracle (`umbra validate
 // --footprint`; docs/footprints.md "Validation"): umbra's own output, or
 // another tool's in the same PLY layout. Plain value types, no CGAL.
-#include <geometry/io/footprint_reader.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/io/footprint_reader.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <string>

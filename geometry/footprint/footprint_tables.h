@@ -2,14 +2,14 @@
 // Internal to geometry/footprint/: what footprints need of a scene that does
 // not depend on its lights (every model's tables, the caster index), made once so that a series of
 // suns (sun_footprints.h) pays for them once; and the per-light side edges.
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/receiver_partition.h>
-#include <geometry/footprint/receiver_plane.h>
-#include <geometry/footprint/receiver_units.h>
-#include <geometry/oracle/bvh.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/volumes/model_tables.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/receiver_partition.h>
+#include <umbra/geometry/footprint/receiver_plane.h>
+#include <umbra/geometry/footprint/receiver_units.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/volumes/model_tables.h>
 
 #include <array>
 #include <cstdint>

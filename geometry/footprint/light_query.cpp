@@ -1,4 +1,4 @@
-#include <geometry/footprint/light_query.h>
+#include <umbra/geometry/footprint/light_query.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #pragma once
 // Internal to geometry/footprint/: is an exact point of a receiver in
 // shadow, approached from the light (DESIGN.md "Shadow footprints")?
-#include <geometry/footprint/receiver_plane.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/transmittance.h>
+#include <umbra/geometry/footprint/receiver_plane.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/transmittance.h>
 
 #include <optional>
 #include <vector>

@@ -2,8 +2,8 @@
 // Internal to geometry/footprint/: one receiver's surface, cut along the
 // segments where a light's shadow may begin or end, into maximal lit and
 // shadowed simple polygons (CGAL's Arrangement_2 on exact segments).
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/receiver_plane.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/receiver_plane.h>
 
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
-#include <geometry/exact/rational_rounding.h>
-#include <geometry/footprint/receiver_plane.h>
+#include <umbra/geometry/exact/rational_rounding.h>
+#include <umbra/geometry/footprint/receiver_plane.h>
 
 #include <optional>
 #include <stdexcept>

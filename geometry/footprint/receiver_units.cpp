@@ -1,4 +1,4 @@
-#include <geometry/footprint/receiver_units.h>
+#include <umbra/geometry/footprint/receiver_units.h>
 
 namespace umbra::geometry::detail {
 

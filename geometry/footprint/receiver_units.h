@@ -3,9 +3,9 @@
 // (itself when planar, else each fan triangle) and the oriented plane of
 // each piece. Shared by the partition (footprint.cpp) and the checker of
 // footprint files (footprint_check.cpp), so both judge the same receivers.
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/footprint/receiver_plane.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/footprint/receiver_plane.h>
+#include <umbra/geometry/scene.h>
 
 #include <array>
 #include <cstdint>

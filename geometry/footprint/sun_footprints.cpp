@@ -1,8 +1,8 @@
-#include <geometry/footprint/footprint_tables.h>
-#include <geometry/footprint/light_query.h>
-#include <geometry/footprint/sun_footprints.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <util/parallel_for.h>
+#include <umbra/geometry/footprint/footprint_tables.h>
+#include <umbra/geometry/footprint/light_query.h>
+#include <umbra/geometry/footprint/sun_footprints.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <bit>

@@ -4,8 +4,8 @@
 // index) is made once; each instant builds its sun's volume and partitions
 // the receivers. And sun hours: each receiver cut where the set of steps
 // that light it changes.
-#include <geometry/footprint/footprint.h>
-#include <geometry/sun/sun_series.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/sun/sun_series.h>
 
 #include <cstddef>
 #include <cstdint>

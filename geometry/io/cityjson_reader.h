@@ -4,7 +4,7 @@
 // geometry, each polygon named by its semantic surface type. A JSON scene's
 // `{"cityjson": ...}` model entry expands into one model per such object
 // (scene_json.cpp; docs/scene-format.md, "CityJSON models").
-#include <geometry/io/mesh_io.h>
+#include <umbra/geometry/io/mesh_io.h>
 
 #include <filesystem>
 #include <optional>

@@ -1,6 +1,6 @@
-#include <geometry/io/footprint_reader.h>
-#include <geometry/io/mesh_lexer.h>
-#include <util/input_file.h>
+#include <umbra/geometry/io/footprint_reader.h>
+#include <umbra/geometry/io/mesh_lexer.h>
+#include <umbra/util/input_file.h>
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 // Footprint files read back (DESIGN.md "Shadow footprints", the PLY layout
 // of docs/footprints.md): umbra's own, or another tool's written in the
 // same layout, for `umbra validate --footprint`.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <cstdint>

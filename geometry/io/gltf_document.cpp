@@ -6,10 +6,10 @@
 // here once, before it is used, so that no malformed file can crash the
 // reader or reach the geometry. Numbers: tinygltf keeps JSON numbers as
 // doubles; float32 positions from buffers widen exactly to double.
-#include <geometry/io/gltf_document.h>
-#include <geometry/io/gltf_json_checks.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
+#include <umbra/geometry/io/gltf_document.h>
+#include <umbra/geometry/io/gltf_json_checks.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/input_file.h>
 
 #include <algorithm>
 #include <array>

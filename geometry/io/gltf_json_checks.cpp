@@ -1,8 +1,7 @@
-#include <geometry/io/gltf_json_checks.h>
-#include <geometry/io/json_depth.h>
-#include <util/input_error.h>
-
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/io/gltf_json_checks.h>
+#include <umbra/geometry/io/json_depth.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/io/gltf_lights_camera.h>
-#include <geometry/sample_ray.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/io/gltf_lights_camera.h>
+#include <umbra/geometry/sample_ray.h>
 
 #include <array>
 #include <cmath>

@@ -4,9 +4,9 @@
 // fields, their ranges, and umbra's `extras.umbra` (a light's falloff, a
 // camera's image size). Where they stand comes from their node
 // (gltf_scene.cpp). Internal to geometry/io.
-#include <geometry/io/gltf_document.h>
-#include <geometry/io/gltf_matrix.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/io/gltf_document.h>
+#include <umbra/geometry/io/gltf_matrix.h>
+#include <umbra/geometry/scene.h>
 
 #include <string>
 

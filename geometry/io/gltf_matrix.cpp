@@ -1,5 +1,5 @@
-#include <geometry/exact/predicates.h>
-#include <geometry/io/gltf_matrix.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/io/gltf_matrix.h>
 
 namespace umbra::geometry::gltf {
 

@@ -1,7 +1,7 @@
 #pragma once
 // glTF node transforms in doubles: column-major 4×4 matrices, composed and
 // applied in a fixed summation order (docs/scene-format.md, "glTF scenes").
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 

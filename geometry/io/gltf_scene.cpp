@@ -8,14 +8,14 @@
 // camera and light parameters are the doubles their text denotes. Node
 // transforms are composed and applied in doubles in the documented order (no
 // FMA: the build uses -ffp-contract=off).
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/io/gltf_document.h>
-#include <geometry/io/gltf_lights_camera.h>
-#include <geometry/io/gltf_matrix.h>
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/mesh_lexer.h>
-#include <geometry/io/position_welder.h>
-#include <geometry/sample_ray.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/io/gltf_document.h>
+#include <umbra/geometry/io/gltf_lights_camera.h>
+#include <umbra/geometry/io/gltf_matrix.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/mesh_lexer.h>
+#include <umbra/geometry/io/position_welder.h>
+#include <umbra/geometry/sample_ray.h>
 
 #include <algorithm>
 #include <array>

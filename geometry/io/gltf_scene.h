@@ -3,8 +3,8 @@
 // docs/scene-format.md ("glTF scenes") is the user's reference: which parts
 // of a glTF file are read, how node transforms are composed, how lights,
 // camera and materials map onto umbra's Scene.
-#include <geometry/io/mesh_io.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/scene.h>
 
 #include <filesystem>
 #include <string_view>

@@ -1,4 +1,4 @@
-#include <geometry/io/json_depth.h>
+#include <umbra/geometry/io/json_depth.h>
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
-#include <geometry/io/json_depth.h>
-#include <geometry/io/json_document.h>
-#include <geometry/io/located_json.h>
-#include <util/input_error.h>
+#include <umbra/geometry/io/json_depth.h>
+#include <umbra/geometry/io/json_document.h>
+#include <umbra/geometry/io/located_json.h>
+#include <umbra/util/input_error.h>
 
 namespace umbra::geometry::json {
 

@@ -1,5 +1,5 @@
-#include <geometry/io/located_json.h>
-#include <util/input_error.h>
+#include <umbra/geometry/io/located_json.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <set>

@@ -1,10 +1,10 @@
 // Entry points of the mesh readers: reading the file, choosing the format by
 // extension, and the checks every format shares. The formats themselves live
 // in off_reader.cpp, obj_reader.cpp, ply_reader.cpp and stl_reader.cpp.
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/mesh_lexer.h>
-#include <util/input_file.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/mesh_lexer.h>
+#include <umbra/util/input_file.h>
 
 #include <string>
 

@@ -2,7 +2,7 @@
 // Mesh files read as exact doubles. OpenMesh's own readers round every
 // coordinate to float (PLATFORM-NOTES.md), so umbra parses each format itself
 // and keeps the doubles the text (or binary double) denotes.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include <geometry/io/mesh_lexer.h>
+#include <umbra/geometry/io/mesh_lexer.h>
 
 #include <charconv>
 #include <cmath>

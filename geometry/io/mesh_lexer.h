@@ -2,8 +2,8 @@
 // Internal to the mesh readers (geometry/*_reader.cpp, geometry/io/mesh_io.cpp):
 // the per-format parsers and the lexing and number parsing they share. Not part
 // of umbra's public API; include <geometry/io/mesh_io.h> instead.
-#include <geometry/io/mesh_io.h>
-#include <util/input_error.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/util/input_error.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -11,7 +11,7 @@
 // '#' starts a comment. A reference must name a vertex defined above it: index
 // 0 or one past the last vertex read so far is an error at that line. Line
 // continuation with '\' is not supported (the '\' is reported as malformed).
-#include <geometry/io/mesh_lexer.h>
+#include <umbra/geometry/io/mesh_lexer.h>
 
 #include <cstdint>
 #include <limits>

@@ -9,7 +9,7 @@
 // vertex or face per line. Counts are checked against the bytes that remain
 // before anything is reserved, so a header that claims 353535235358 vertices
 // (assimp's invalid/OutOfMemory.off) is an error, not an allocation.
-#include <geometry/io/mesh_lexer.h>
+#include <umbra/geometry/io/mesh_lexer.h>
 
 #include <algorithm>
 #include <cstdint>

@@ -12,7 +12,7 @@
 // Over 500 lines: the header, the three encodings and the face-table variant
 // (footprint files' face properties) share one parser, which splitting would
 // have to expose.
-#include <geometry/io/mesh_lexer.h>
+#include <umbra/geometry/io/mesh_lexer.h>
 
 #include <algorithm>
 #include <bit>

@@ -1,7 +1,7 @@
 #pragma once
 // Matching vertices by their exact bits: what the readers and the exporters
 // use to share a vertex among faces without ever comparing in tolerance.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <bit>

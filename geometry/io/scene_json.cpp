@@ -5,20 +5,19 @@
 // validating accessors (json_fields.h) that name each field by its path
 // ("lights[1].position"). The inline vertex and face arrays, a scene's bulk,
 // build a path only for a value that is wrong.
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/io/cityjson_reader.h>
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/json_fields.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/io/scene_sun.h>
-#include <geometry/io/transform.h>
-#include <geometry/oracle/visible_fraction.h>
-#include <geometry/sample_ray.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/io/cityjson_reader.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/json_fields.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/io/scene_sun.h>
+#include <umbra/geometry/io/transform.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/input_file.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // The JSON scene format of DESIGN.md (docs/scene-format.md is the reference).
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <filesystem>
 #include <string_view>

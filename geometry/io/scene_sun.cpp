@@ -1,8 +1,7 @@
-#include <geometry/io/json_path.h>
-#include <geometry/io/scene_sun.h>
-#include <geometry/sun/sun_light.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/io/json_path.h>
+#include <umbra/geometry/io/scene_sun.h>
+#include <umbra/geometry/sun/sun_light.h>
 
 #include <cmath>
 

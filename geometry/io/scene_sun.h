@@ -1,8 +1,8 @@
 #pragma once
 // The scene's "site" and its lights of type "sun" (DESIGN.md "Site and
 // sun", docs/sun.md). Internal to geometry/io (scene_json.cpp calls these).
-#include <geometry/io/json_fields.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/io/json_fields.h>
+#include <umbra/geometry/scene.h>
 
 #include <optional>
 #include <string>

@@ -13,8 +13,8 @@
 // NaN is tolerated there). Each facet is one polygon. Vertices are shared
 // between facets only when their three coordinates are bit-identical (so +0
 // and -0 stay apart), which is what lets adjacency be found downstream.
-#include <geometry/io/mesh_lexer.h>
-#include <geometry/io/position_welder.h>
+#include <umbra/geometry/io/mesh_lexer.h>
+#include <umbra/geometry/io/position_welder.h>
 
 #include <array>
 #include <bit>

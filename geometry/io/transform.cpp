@@ -1,4 +1,4 @@
-#include <geometry/io/transform.h>
+#include <umbra/geometry/io/transform.h>
 
 #include <cmath>
 #include <numbers>

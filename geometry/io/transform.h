@@ -1,5 +1,5 @@
 #pragma once
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 namespace umbra::geometry {
 

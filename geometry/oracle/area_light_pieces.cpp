@@ -1,8 +1,7 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/oracle/area_light_pieces.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/oracle/area_light_pieces.h>
 
 #include <algorithm>
 #include <cmath>

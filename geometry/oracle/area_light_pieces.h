@@ -3,7 +3,7 @@
 // (DESIGN.md "Area lights": a planar light is its even-odd interior, a
 // non-planar one its fan triangles), each with the convex hull its pyramid
 // is built over.
-#include <geometry/oracle/rational_geometry.h>
+#include <umbra/geometry/oracle/rational_geometry.h>
 
 #include <array>
 #include <span>

@@ -1,4 +1,4 @@
-#include <geometry/oracle/bvh.h>
+#include <umbra/geometry/oracle/bvh.h>
 
 #include <algorithm>
 #include <cmath>

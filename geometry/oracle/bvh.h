@@ -2,7 +2,7 @@
 // A bounding-volume hierarchy over axis-aligned boxes that only picks
 // candidates: its float tests are conservative (boxes are widened by more
 // than the rounding error of the tests), and exact predicates decide.
-#include <geometry/box.h>
+#include <umbra/geometry/box.h>
 
 #include <cstdint>
 #include <vector>

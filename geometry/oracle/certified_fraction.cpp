@@ -1,6 +1,6 @@
-#include <geometry/oracle/certified_fraction.h>
-#include <geometry/oracle/covered_area_sweep.h>
-#include <geometry/oracle/interval_clip.h>
+#include <umbra/geometry/oracle/certified_fraction.h>
+#include <umbra/geometry/oracle/covered_area_sweep.h>
+#include <umbra/geometry/oracle/interval_clip.h>
 
 #include <algorithm>
 #include <bit>

@@ -16,8 +16,8 @@
 // neighbouring triangles that are one true segment (interval_clip.h's
 // Source) cancel exactly and cost nothing: on a mesh, only the silhouette
 // seen from H, the clip edges and the light's edges are left.
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/area_light_pieces.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/area_light_pieces.h>
 
 #include <array>
 #include <optional>

@@ -1,4 +1,4 @@
-#include <geometry/oracle/flat_seam.h>
+#include <umbra/geometry/oracle/flat_seam.h>
 
 #include <algorithm>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to geometry/oracle/: whether a sample on an edge is a flat seam,
 // which DESIGN.md judges (V is continuous there) rather than counting apart.
-#include <geometry/oracle/rational_geometry.h>
+#include <umbra/geometry/oracle/rational_geometry.h>
 
 #include <array>
 #include <vector>

@@ -1,4 +1,4 @@
-#include <geometry/oracle/interval_clip.h>
+#include <umbra/geometry/oracle/interval_clip.h>
 
 namespace umbra::geometry::soft {
 namespace {

@@ -3,9 +3,9 @@
 // and convex clipping of them whose every decision is certain, for the
 // certified visible fraction (certified_fraction.h). Callers hold
 // CGAL::Protect_FPU_rounding<true>.
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/covered_area_sweep.h>
-#include <geometry/vec3.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/covered_area_sweep.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <cstdint>

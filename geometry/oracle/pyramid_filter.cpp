@@ -1,5 +1,5 @@
-#include <geometry/oracle/interval_clip.h>
-#include <geometry/oracle/pyramid_filter.h>
+#include <umbra/geometry/oracle/interval_clip.h>
+#include <umbra/geometry/oracle/pyramid_filter.h>
 
 #include <cmath>
 

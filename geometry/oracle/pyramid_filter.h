@@ -14,9 +14,9 @@
 // certainly outside one plane: it cannot meet the open pyramid, nor hold H
 // (which lies on every side and strictly inside the light's plane), which
 // is exactly what the exact tests would find.
-#include <geometry/box.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/area_light_pieces.h>
+#include <umbra/geometry/box.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/area_light_pieces.h>
 
 #include <array>
 #include <span>

@@ -1,5 +1,5 @@
-#include <geometry/exact/rational_rounding.h>
-#include <geometry/oracle/rational_geometry.h>
+#include <umbra/geometry/exact/rational_rounding.h>
+#include <umbra/geometry/oracle/rational_geometry.h>
 
 #include <algorithm>
 #include <iterator>

@@ -2,9 +2,9 @@
 // What the oracle settles about a sample before it looks at any polygon:
 // shared by classify_sample (the first shadowing polygon decides) and
 // transmittance_sample (every one counts). Internal to geometry/oracle/.
-#include <geometry/exact/segment_crossing.h>
-#include <geometry/exact/visible_surface.h>
-#include <geometry/oracle/scene_index.h>
+#include <umbra/geometry/exact/segment_crossing.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/oracle/scene_index.h>
 
 #include <cstdint>
 #include <vector>

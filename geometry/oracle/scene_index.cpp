@@ -1,4 +1,4 @@
-#include <geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/scene_index.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,9 +5,9 @@
 // a frame whose pixels the scanline settled but for a handful asks a few
 // (building it was a third of a lightless 1280x720 frame of refined_elephant
 // or bunny00, callgrind; a scan costs ~1/40 of a build).
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/oracle/bvh.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/scene.h>
 
 #include <atomic>
 #include <memory>

@@ -1,8 +1,8 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/exact/segment_crossing.h>
-#include <geometry/oracle/sample_segment.h>
-#include <geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/exact/segment_crossing.h>
+#include <umbra/geometry/oracle/sample_segment.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
 
 #include <algorithm>
 #include <cmath>

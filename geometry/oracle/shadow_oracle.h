@@ -1,9 +1,9 @@
 #pragma once
 // The exact point-in-shadow query: DESIGN.md's truth, which every render
 // method is judged by.
-#include <geometry/exact/predicates.h>
-#include <geometry/exact/segment_crossing.h>
-#include <geometry/exact/visible_surface.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/exact/segment_crossing.h>
+#include <umbra/geometry/exact/visible_surface.h>
 
 #include <optional>
 #include <vector>

@@ -1,5 +1,5 @@
-#include <geometry/oracle/sample_segment.h>
-#include <geometry/oracle/transmittance.h>
+#include <umbra/geometry/oracle/sample_segment.h>
+#include <umbra/geometry/oracle/transmittance.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // Coloured shadows: τ(P), the fraction of a point or directional light's
 // intensity that reaches a sample through the tinted polygons between it
 // and the light (DESIGN.md "Transmittance", docs/transmittance.md).
-#include <geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
 
 #include <cstdint>
 #include <span>

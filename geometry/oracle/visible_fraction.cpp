@@ -1,13 +1,13 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/area_light_pieces.h>
-#include <geometry/oracle/certified_fraction.h>
-#include <geometry/oracle/flat_seam.h>
-#include <geometry/oracle/pyramid_filter.h>
-#include <geometry/oracle/rational_geometry.h>
-#include <geometry/oracle/visible_fraction.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/area_light_pieces.h>
+#include <umbra/geometry/oracle/certified_fraction.h>
+#include <umbra/geometry/oracle/flat_seam.h>
+#include <umbra/geometry/oracle/pyramid_filter.h>
+#include <umbra/geometry/oracle/rational_geometry.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
 
 #include <algorithm>
 #include <array>

@@ -12,9 +12,9 @@
 // faces (a half-plane per edge through H). Per polygon the pieces are
 // combined by parity (its surface is its fan triangles counted mod 2), across
 // polygons by union, all with CGAL's exact Boolean operations on Epeck.
-#include <geometry/exact/visible_surface.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/sample_ray.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/sample_ray.h>
 
 #include <cstdint>
 #include <span>

@@ -1,5 +1,5 @@
-#include <geometry/sun/iso_time.h>
-#include <geometry/sun/solar_position.h>
+#include <umbra/geometry/sun/iso_time.h>
+#include <umbra/geometry/sun/solar_position.h>
 
 #include <cctype>
 #include <cmath>

@@ -1,7 +1,7 @@
 // SPA as Reda & Andreas give it (section 3), in degrees where they use
 // degrees; the periodic terms are in spa_terms.h.
-#include <geometry/sun/solar_position.h>
-#include <geometry/sun/spa_terms.h>
+#include <umbra/geometry/sun/solar_position.h>
+#include <umbra/geometry/sun/spa_terms.h>
 
 #include <cmath>
 #include <numbers>

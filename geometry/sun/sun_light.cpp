@@ -1,4 +1,4 @@
-#include <geometry/sun/sun_light.h>
+#include <umbra/geometry/sun/sun_light.h>
 
 #include <cmath>
 #include <numbers>

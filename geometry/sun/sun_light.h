@@ -1,9 +1,9 @@
 #pragma once
 // A light of type "sun" (DESIGN.md "Site and sun"): the directional light
 // whose direction is the sun's topocentric position at the site and time.
-#include <geometry/scene.h>
-#include <geometry/sun/iso_time.h>
-#include <geometry/sun/solar_position.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/sun/iso_time.h>
+#include <umbra/geometry/sun/solar_position.h>
 
 namespace umbra::geometry {
 

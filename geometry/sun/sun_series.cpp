@@ -1,7 +1,6 @@
-#include <geometry/sun/sun_light.h>
-#include <geometry/sun/sun_series.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/sun/sun_light.h>
+#include <umbra/geometry/sun/sun_series.h>
 
 #include <cctype>
 #include <cmath>

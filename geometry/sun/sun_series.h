@@ -2,8 +2,8 @@
 // A series of sun positions, `START/END/STEP` (docs/sun.md "Time series"):
 // ISO 8601 start and end instants with their UTC offsets and an ISO 8601
 // duration, e.g. 2026-01-01T00:00+01:00/2027-01-01T00:00+01:00/PT1H.
-#include <geometry/scene.h>
-#include <geometry/sun/iso_time.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/sun/iso_time.h>
 
 #include <cstddef>
 #include <string>

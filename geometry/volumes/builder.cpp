@@ -1,11 +1,11 @@
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/contour.h>
-#include <geometry/volumes/far_ends.h>
-#include <geometry/volumes/model_edges.h>
-#include <geometry/volumes/model_reach.h>
-#include <geometry/volumes/sphere_ends.h>
-#include <util/parallel_for.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/contour.h>
+#include <umbra/geometry/volumes/far_ends.h>
+#include <umbra/geometry/volumes/model_edges.h>
+#include <umbra/geometry/volumes/model_reach.h>
+#include <umbra/geometry/volumes/sphere_ends.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>

@@ -2,9 +2,9 @@
 // Shadow volumes from contour edges (Crow), closed and generalised as
 // Bergeron describes: open and non-manifold models, L-twisted polygons,
 // caps, spheres of influence.
-#include <geometry/scene.h>
-#include <geometry/volumes/model_tables.h>
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/model_tables.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <cstdint>
 #include <span>

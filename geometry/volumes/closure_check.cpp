@@ -1,4 +1,4 @@
-#include <geometry/volumes/closure_check.h>
+#include <umbra/geometry/volumes/closure_check.h>
 
 #include <bit>
 #include <map>

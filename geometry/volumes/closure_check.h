@@ -3,7 +3,7 @@
 // reusable check: the Nb_C-weighted boundary of every light's faces cancels
 // edge by edge (vertices matched bit for bit), and every twisted polygon's
 // own volume is closed modulo 2.
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/volumes/contour.h>
-#include <geometry/volumes/twist.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/volumes/contour.h>
+#include <umbra/geometry/volumes/twist.h>
 
 namespace umbra::geometry {
 Sign polygon_facing(const Model& model, const Polygon& polygon, const HPoint& light) {

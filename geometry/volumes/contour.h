@@ -14,10 +14,10 @@
 //
 // Edges are matched by vertex position (bit-identical coordinates), so a
 // mesh with duplicated vertices still finds its shared edges (geometry/volumes/model_edges.h).
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/scene.h>
-#include <geometry/volumes/model_edges.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/model_edges.h>
 
 #include <cstdint>
 #include <optional>

@@ -1,7 +1,7 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/crossings.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/volumes/crossings.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,12 +2,12 @@
 // The depth count of Crow's and Bergeron's algorithm at one sample, decided
 // exactly on the ideal side polygons: the renderer's answer wherever its
 // floating point cannot decide.
-#include <geometry/exact/visible_surface.h>
-#include <geometry/oracle/bvh.h>
-#include <geometry/sample_ray.h>
-#include <geometry/scene.h>
-#include <geometry/volumes/eye_start.h>
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/eye_start.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <memory>
 #include <mutex>

@@ -1,8 +1,8 @@
-#include <geometry/exact/segment_crossing.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/eye_start.h>
-#include <geometry/volumes/model_reach.h>
-#include <util/parallel_for.h>
+#include <umbra/geometry/exact/segment_crossing.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/volumes/eye_start.h>
+#include <umbra/geometry/volumes/model_reach.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <map>

@@ -3,10 +3,10 @@
 // In_Shadow flags of every light at the eye, computed exactly, so that a
 // depth count along an eye ray starts from the truth even when the eye sits
 // inside one or several shadow volumes, or on one's boundary.
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/transmittance.h>
-#include <geometry/volumes/shadow_volume.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/transmittance.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
 
 #include <cstdint>
 #include <vector>

@@ -1,5 +1,5 @@
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/volumes/far_ends.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/volumes/far_ends.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,10 +2,10 @@
 // How far shadow volumes must reach (Bergeron's sphere of influence and its
 // unlimited counterpart): the extrusion factor k of one model's volume for
 // one light, chosen so that no eye ray that matters ever meets a far end.
-#include <geometry/box.h>
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/scene.h>
-#include <geometry/volumes/triangle_runs.h>
+#include <umbra/geometry/box.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/triangle_runs.h>
 
 #include <optional>
 #include <span>

@@ -1,4 +1,4 @@
-#include <geometry/volumes/model_edges.h>
+#include <umbra/geometry/volumes/model_edges.h>
 
 #include <bit>
 #include <limits>

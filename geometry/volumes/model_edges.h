@@ -7,7 +7,7 @@
 // Edges are matched by vertex position (bit-identical coordinates, -0 and
 // +0 alike), so a mesh with duplicated vertices still finds its shared
 // edges; edges of zero length (two equal positions) are left out.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <vector>

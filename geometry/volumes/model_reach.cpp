@@ -1,6 +1,6 @@
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/volumes/far_ends.h>
-#include <geometry/volumes/model_reach.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/volumes/far_ends.h>
+#include <umbra/geometry/volumes/model_reach.h>
 
 #include <algorithm>
 #include <array>

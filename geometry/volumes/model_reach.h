@@ -18,9 +18,9 @@
 // counts, at every sample in range, exactly the polygons that shadow it.
 // The count at the eye leaves out the same polygons (eye_start.cpp asks
 // has_volume). A connected mesh is kept or left out whole, as a model.
-#include <geometry/box.h>
-#include <geometry/oracle/bvh.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/box.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <memory>

@@ -1,5 +1,5 @@
-#include <geometry/volumes/model_tables.h>
-#include <util/parallel_for.h>
+#include <umbra/geometry/volumes/model_tables.h>
+#include <umbra/util/parallel_for.h>
 
 namespace umbra::geometry {
 

@@ -4,9 +4,9 @@
 // and builds every light's volume from them: made once and shared, where
 // each used to make its own (twice the hashing of every vertex and edge on
 // a shadowed frame).
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/scene.h>
-#include <geometry/volumes/model_edges.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/model_edges.h>
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Shadow volumes as plain values: what geometry/ hands to raster/ and to the
 // exporters. No CGAL types cross this header.
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/volumes/sphere_ends.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/volumes/sphere_ends.h>
 
 #include <algorithm>
 #include <cmath>

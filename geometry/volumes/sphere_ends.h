@@ -22,7 +22,7 @@
 // wedge or cap it stands for; far points are rounded, not ideal, but lie
 // within a few ulps of R of points of the ideal plane, which the renderer's
 // error bounds already allow for (raster/scanline/projected_polygon.h).
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <optional>
 #include <vector>

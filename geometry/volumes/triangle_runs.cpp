@@ -1,4 +1,4 @@
-#include <geometry/volumes/triangle_runs.h>
+#include <umbra/geometry/volumes/triangle_runs.h>
 
 #include <algorithm>
 #include <cmath>

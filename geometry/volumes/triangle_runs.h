@@ -5,9 +5,9 @@
 // Morton order of their boxes' centres first, so a run's box is small
 // whatever order the file kept them in (scanned meshes keep none). Made
 // once per casting model by the volume builder, asked by every light.
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/oracle/bvh.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstdint>
 #include <span>

@@ -1,6 +1,5 @@
-#include <geometry/volumes/twist.h>
-
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <umbra/geometry/volumes/twist.h>
 
 #include <cstddef>
 #include <optional>

@@ -10,8 +10,8 @@
 // (HPoint::at_infinity(-D)). A point x is seen along the ray from L through x
 // (points L + s·(x - L), s > 0); for a directional light along the line
 // x + t·D, t real.
-#include <geometry/exact/predicates.h>
-#include <geometry/vec3.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/vec3.h>
 
 #include <span>
 

@@ -3,10 +3,9 @@
 // light (docs/ray-cast.md, "Area lights"): stratified, area-preserving,
 // seeded per pixel and light so that any thread count or tiling gives the
 // same bytes.
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/scene.h>
-
 #include <glm/vec3.hpp>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/scene.h>
 
 #include <algorithm>
 #include <cmath>

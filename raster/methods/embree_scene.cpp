@@ -1,7 +1,7 @@
-#include <raster/library_versions.h>
-#include <raster/methods/embree_scene.h>
-#include <raster/methods/ray_transmittance.h>
-#include <util/parallel_for.h>
+#include <umbra/raster/library_versions.h>
+#include <umbra/raster/methods/embree_scene.h>
+#include <umbra/raster/methods/ray_transmittance.h>
+#include <umbra/util/parallel_for.h>
 
 #include <array>
 #include <cmath>

@@ -1,10 +1,10 @@
 // Method::exact: the ground truth, one oracle query per pixel and light.
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/oracle/visible_fraction.h>
-#include <raster/methods/render_methods.h>
-#include <raster/pixel_sample.h>
-#include <raster/scanline/surface_table.h>
-#include <util/parallel_for.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
+#include <umbra/raster/methods/render_methods.h>
+#include <umbra/raster/pixel_sample.h>
+#include <umbra/raster/scanline/surface_table.h>
+#include <umbra/util/parallel_for.h>
 
 #include <chrono>
 

@@ -1,8 +1,7 @@
-#include <geometry/exact/coordinate_range.h>
-#include <raster/methods/float_range.h>
-#include <util/input_error.h>
-
 #include <fmt/format.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/raster/methods/float_range.h>
+#include <umbra/util/input_error.h>
 
 namespace umbra::raster {
 

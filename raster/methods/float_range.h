@@ -6,7 +6,7 @@
 // 2^60 keeps a difference below 2^61 and a sum of three squared differences
 // below 2^124, under float's largest value (~2^128). Beyond, a distance
 // or a depth overflows to infinity and the answer is meaningless.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <string_view>
 

@@ -12,18 +12,18 @@
 // post-process looks up the point rebuilt from the image's float depth and
 // darkens the pixel after shading; Ikedo's ID buffer stores and compares
 // surface IDs.
-#include <geometry/box.h>
-#include <geometry/exact/predicates.h>
-#include <raster/methods/map_variants.h>
-#include <raster/methods/render_methods.h>
-#include <raster/methods/shadow_lookup.h>
-#include <raster/methods/shadow_map.h>
-#include <raster/pixel_sample.h>
-#include <raster/scanline/scanline.h>
-#include <raster/scanline/surface_table.h>
-#include <raster/sphere_of_influence.h>
-#include <util/parallel_for.h>
-#include <util/phase_clock.h>
+#include <umbra/geometry/box.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/raster/methods/map_variants.h>
+#include <umbra/raster/methods/render_methods.h>
+#include <umbra/raster/methods/shadow_lookup.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/raster/pixel_sample.h>
+#include <umbra/raster/scanline/scanline.h>
+#include <umbra/raster/scanline/surface_table.h>
+#include <umbra/raster/sphere_of_influence.h>
+#include <umbra/util/parallel_for.h>
+#include <umbra/util/phase_clock.h>
 
 #include <atomic>
 #include <bit>

@@ -1,4 +1,4 @@
-#include <raster/methods/map_variants.h>
+#include <umbra/raster/methods/map_variants.h>
 
 #include <stdexcept>
 #include <string>

@@ -10,10 +10,10 @@
 //   - Ikedo's ID buffer: the view stores the ID of the nearest surface
 //     beside its depth, and a receiver is lit where the ID it finds is its
 //     own (no bias, no acne, and no self-shadow within one ID: his torus).
-#include <geometry/oracle/scene_index.h>
-#include <geometry/sample_ray.h>
-#include <raster/render.h>
-#include <raster/shading.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/shading.h>
 
 #include <cstdint>
 #include <optional>

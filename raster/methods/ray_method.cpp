@@ -12,18 +12,17 @@
 // point light's ray is), V = unoccluded / N. The sampling is deterministic,
 // seeded per pixel and light: a render is the same bytes whatever the
 // thread count or tiling.
-#include <geometry/exact/polygon_surface.h>
-#include <raster/light_windows.h>
-#include <raster/methods/area_light_samples.h>
-#include <raster/methods/embree_scene.h>
-#include <raster/methods/ray_transmittance.h>
-#include <raster/methods/render_methods.h>
-#include <raster/pixel_sample.h>
-#include <util/parallel_for.h>
-#include <util/phase_clock.h>
-
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/raster/methods/area_light_samples.h>
+#include <umbra/raster/methods/embree_scene.h>
+#include <umbra/raster/methods/ray_transmittance.h>
+#include <umbra/raster/methods/render_methods.h>
+#include <umbra/raster/pixel_sample.h>
+#include <umbra/util/parallel_for.h>
+#include <umbra/util/phase_clock.h>
 
 #include <algorithm>
 #include <atomic>

@@ -1,5 +1,5 @@
-#include <geometry/oracle/transmittance.h>
-#include <raster/methods/ray_transmittance.h>
+#include <umbra/geometry/oracle/transmittance.h>
+#include <umbra/raster/methods/ray_transmittance.h>
 
 #include <algorithm>
 

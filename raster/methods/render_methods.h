@@ -1,10 +1,10 @@
 #pragma once
 // The render methods behind raster::render (render.h), one file each.
-#include <geometry/oracle/scene_index.h>
-#include <geometry/volumes/model_tables.h>
-#include <raster/frame.h>
-#include <raster/render.h>
-#include <util/parallel_for.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/volumes/model_tables.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/render.h>
+#include <umbra/util/parallel_for.h>
 
 #include <cstddef>
 #include <span>

@@ -1,4 +1,4 @@
-#include <raster/methods/shadow_lookup.h>
+#include <umbra/raster/methods/shadow_lookup.h>
 
 #include <algorithm>
 #include <cmath>

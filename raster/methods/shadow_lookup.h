@@ -2,8 +2,8 @@
 // Reading a depth view at a visible sample (Williams 1978): the depth bias,
 // the lookup (nearest or bilinear depth), the dither of the lookup position
 // and percentage-closer filtering. Units and defaults: docs/shadow-maps.md.
-#include <raster/methods/shadow_map.h>
-#include <raster/render.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/raster/render.h>
 
 #include <cstdint>
 

@@ -2,8 +2,8 @@
 // crossings of the polygon's edges with the row's centre line, sorted; texels
 // whose centres lie between the 1st and 2nd, 3rd and 4th, ... crossing are
 // covered. Depth is the occluder's plane along each texel's ray.
-#include <raster/methods/shadow_map.h>
-#include <util/parallel_for.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>

@@ -7,9 +7,9 @@
 // light travels). The stored depth is view-space z, linear (not the
 // hyperbolic depth of a GL projection), so that a depth difference means the
 // same distance everywhere in the view.
-#include <geometry/oracle/bvh.h>
-#include <geometry/scene.h>
-#include <geometry/vec3.h>
+#include <umbra/geometry/oracle/bvh.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
-#include <raster/methods/tint_channels.h>
-#include <raster/scanline/scanline.h>
+#include <umbra/raster/methods/tint_channels.h>
+#include <umbra/raster/scanline/scanline.h>
 
 #include <algorithm>
 

@@ -8,10 +8,10 @@
 // Π T_m^count_m comes out of the same pass. The scanline knows nothing of
 // this: each count is one of its "lights" (RasterPolygon::light, EyePlane::light),
 // here called a channel.
-#include <geometry/scene.h>
-#include <geometry/volumes/eye_start.h>
-#include <geometry/volumes/shadow_volume.h>
-#include <raster/light_windows.h>
+#include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/eye_start.h>
+#include <umbra/geometry/volumes/shadow_volume.h>
+#include <umbra/raster/light_windows.h>
 
 #include <cstdint>
 #include <vector>

@@ -2,22 +2,22 @@
 // In_Shadow flags, counted by the scanline renderer from each light's count
 // at the eye; what floating point cannot decide is decided again exactly, so
 // every pixel agrees with the oracle off boundaries.
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/oracle/transmittance.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/crossings.h>
-#include <geometry/volumes/eye_start.h>
-#include <raster/light_windows.h>
-#include <raster/methods/render_methods.h>
-#include <raster/methods/tint_channels.h>
-#include <raster/pixel_sample.h>
-#include <raster/scanline/scanline.h>
-#include <raster/scanline/surface_table.h>
-#include <raster/sphere_of_influence.h>
-#include <util/parallel_for.h>
-#include <util/phase_clock.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/transmittance.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/crossings.h>
+#include <umbra/geometry/volumes/eye_start.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/raster/methods/render_methods.h>
+#include <umbra/raster/methods/tint_channels.h>
+#include <umbra/raster/pixel_sample.h>
+#include <umbra/raster/scanline/scanline.h>
+#include <umbra/raster/scanline/surface_table.h>
+#include <umbra/raster/sphere_of_influence.h>
+#include <umbra/util/parallel_for.h>
+#include <umbra/util/phase_clock.h>
 
 #include <atomic>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include <raster/scanline/band_scheduler.h>
+#include <umbra/raster/scanline/band_scheduler.h>
 
 #include <stdexcept>
 

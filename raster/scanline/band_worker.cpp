@@ -1,6 +1,6 @@
 // BandWorker::run, the order of a worker's rows: each band of rows goes through
 // the surface pass, then the shadow pass; and the active lists they walk.
-#include <raster/scanline/band_worker.h>
+#include <umbra/raster/scanline/band_worker.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // rows and bands, the lists), raster/scanline/surface_pass.cpp (visible points),
 // raster/scanline/shadow_pass.cpp (depth counts) and raster/scanline/uncertainty_flags.cpp
 // (uncertainty).
-#include <raster/scanline/edge_tables.h>
+#include <umbra/raster/scanline/edge_tables.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Preparing the scanline's input (raster/scanline/edge_tables.h): projection, the edge
 // table and its bucket sorts, the strips' geometry.
-#include <raster/scanline/edge_tables.h>
-#include <util/parallel_for.h>
+#include <umbra/raster/scanline/edge_tables.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>

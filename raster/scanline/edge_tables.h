@@ -3,9 +3,9 @@
 // (projected_polygon.h), every edge in the y bucket sort with the rows on
 // which it is active and the strip round it examined for uncertainty.
 // Prepared once per render, in parallel; read by every worker.
-#include <raster/scanline/projected_polygon.h>
-#include <raster/scanline/scanline.h>
-#include <util/uninitialized.h>
+#include <umbra/raster/scanline/projected_polygon.h>
+#include <umbra/raster/scanline/scanline.h>
+#include <umbra/util/uninitialized.h>
 
 #include <cstdint>
 #include <limits>

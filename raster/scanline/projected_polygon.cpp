@@ -1,4 +1,4 @@
-#include <raster/scanline/projected_polygon.h>
+#include <umbra/raster/scanline/projected_polygon.h>
 
 #include <algorithm>
 #include <cmath>

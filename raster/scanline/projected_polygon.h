@@ -9,8 +9,8 @@
 // spaces; only rounding differs. Screen coordinates are (x/z, y/z) on the
 // plane z = 1 (sample_ray's sx, sy); pixel coordinates put the centre of
 // pixel (i, j) at (i + 0.5, j + 0.5), x to the right, y down.
-#include <geometry/sample_ray.h>
-#include <raster/scanline/scanline.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/scanline/scanline.h>
 
 #include <cmath>
 #include <cstdint>

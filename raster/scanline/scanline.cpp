@@ -24,10 +24,10 @@
 //      it lies in front of the visible point.
 // Every pixel that a floating-point decision could have got wrong is flagged
 // `uncertain` (raster/scanline/uncertainty_flags.cpp); the bounds are stated where they are used.
-#include <raster/scanline/band_scheduler.h>
-#include <raster/scanline/band_worker.h>
-#include <raster/scanline/scanline.h>
-#include <util/parallel_for.h>
+#include <umbra/raster/scanline/band_scheduler.h>
+#include <umbra/raster/scanline/band_worker.h>
+#include <umbra/raster/scanline/scanline.h>
+#include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>

@@ -4,11 +4,11 @@
 // close to call, the pixel is flagged `uncertain` and the caller decides it
 // again exactly (its visible point and every light, or only the lights whose
 // shadow polygons were too close to call); every other answer is final.
-#include <geometry/sample_ray.h>
-#include <raster/frame.h>
-#include <raster/light_windows.h>
-#include <util/progress.h>
-#include <util/uninitialized.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/util/progress.h>
+#include <umbra/util/uninitialized.h>
 
 #include <cstdint>
 #include <optional>

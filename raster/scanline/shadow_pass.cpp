@@ -3,7 +3,7 @@
 // twisted group's flag) at the pixels where it lies between the eye and the
 // visible point; polygons clearly behind every visible point round their
 // part in the band are not scanned there.
-#include <raster/scanline/band_worker.h>
+#include <umbra/raster/scanline/band_worker.h>
 
 #include <algorithm>
 #include <bit>

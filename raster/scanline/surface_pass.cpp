@@ -1,7 +1,7 @@
 // The surface pass of the scanline (Bouknight): per row the x-sorted
 // crossings of the surfaces' edges cut it into spans; per span a
 // depth-ordered list of its surfaces gives each pixel its visible point.
-#include <raster/scanline/band_worker.h>
+#include <umbra/raster/scanline/band_worker.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include <geometry/exact/constructions.h>
-#include <geometry/exact/predicates.h>
-#include <raster/scanline/surface_table.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/raster/scanline/surface_table.h>
 
 #include <cmath>
 

@@ -4,10 +4,10 @@
 // (polygon_surface.h), degenerate polygons not at all. Each entry remembers
 // which polygon and fan triangle it is, so that a pixel's visible surface
 // leads back to the exact geometry and to its shading values.
-#include <geometry/exact/visible_surface.h>
-#include <geometry/oracle/scene_index.h>
-#include <raster/pixel_sample.h>
-#include <raster/scanline/scanline.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/raster/pixel_sample.h>
+#include <umbra/raster/scanline/scanline.h>
 
 #include <vector>
 

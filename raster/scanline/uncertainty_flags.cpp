@@ -1,7 +1,7 @@
 // The uncertainty flags of the scanline: pixels a floating-point decision
 // could have got wrong, near an edge's line or under a degenerate polygon,
 // are flagged for the exact fallback.
-#include <raster/scanline/band_worker.h>
+#include <umbra/raster/scanline/band_worker.h>
 
 #include <algorithm>
 #include <cmath>

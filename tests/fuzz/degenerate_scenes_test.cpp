@@ -6,11 +6,11 @@
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/placement_geometry.h>
 #include <fuzz/scene_export.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/io/scene_json.h>
 #include <tests/fuzz/exact_reference.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/io/scene_json.h>
 
 #include <bit>
 #include <cmath>

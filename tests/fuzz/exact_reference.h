@@ -3,8 +3,9 @@
 // under test: rationals (CGAL::Exact_rational, every double taken as its
 // exact value) for "strictly inside a segment", and geometry's exact
 // predicates for lines and planes.
-#include <geometry/exact/predicates.h>
 #include <tests/support/rational_vec.h>
+
+#include <umbra/geometry/exact/predicates.h>
 
 namespace umbra::fuzz::test {
 

@@ -6,13 +6,13 @@
 #include <fuzz/real_scenes.h>
 #include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
-#include <geometry/exact/predicates.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/scene_json.h>
 #include <tests/fuzz/exact_reference.h>
 #include <tests/fuzz/test_meshes.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/scene_json.h>
 
 #include <cmath>
 #include <map>

@@ -4,12 +4,12 @@
 // scene file the CLI can replay, and that the JSON says what the text says.
 #include <fuzz/real_sweep.h>
 #include <fuzz/sweep_report.h>
-#include <geometry/io/scene_json.h>
-#include <raster/validate.h>
 #include <tests/fuzz/test_meshes.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/raster/validate.h>
 
 #include <stdexcept>
 

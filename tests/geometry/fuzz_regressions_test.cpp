@@ -1,13 +1,12 @@
 // Findings of the fuzz harnesses (fuzz/regressions/), each as a named test
 // with its geometry inline. The raw inputs are replayed by fuzz.replay.*.
-#include <geometry/exact/polygon_surface.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/contour.h>
-#include <geometry/volumes/twist.h>
-
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/polygon_surface.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/contour.h>
+#include <umbra/geometry/volumes/twist.h>
 
 namespace umbra::geometry {
 namespace {

@@ -1,6 +1,5 @@
-#include <geometry/sample_ray.h>
-
 #include <gtest/gtest.h>
+#include <umbra/geometry/sample_ray.h>
 
 namespace umbra::geometry {
 namespace {

@@ -2,7 +2,10 @@
 """What may include what (docs/architecture.md), checked on the source tree.
 
 Follows umbra's own includes transitively (`#include <folder/...>` rooted at
-the project) and fails, naming the chain, when a rule is broken:
+the project; the libraries' headers by their installed names,
+`<umbra/geometry/...>`) and fails, naming the chain, when a rule is broken:
+- the libraries (util/, geometry/, raster/) are included as <umbra/...>
+  everywhere, never by their bare folder (that only resolves in this tree);
 - util/ includes nothing of umbra's but util/;
 - geometry/ never reaches raster/, cli/, fuzz/ or bench/;
 - raster/ never reaches a CGAL or OpenMesh header (it gets plain values and
@@ -26,8 +29,23 @@ PROJECT = ("util", "geometry", "raster", "cli", "fuzz", "bench", "tests", "pytho
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
 
-def includes(path):
+LIBRARIES = ("util", "geometry", "raster")
+
+
+def project_name(inc):
+    """umbra/geometry/x.h -> geometry/x.h: where the header lives in the tree."""
+    parts = inc.split("/")
+    if len(parts) > 2 and parts[0] == "umbra" and parts[1] in LIBRARIES:
+        return "/".join(parts[1:])
+    return inc
+
+
+def raw_includes(path):
     return INCLUDE.findall(path.read_text(encoding="utf-8", errors="replace"))
+
+
+def includes(path):
+    return [project_name(inc) for inc in raw_includes(path)]
 
 
 def reach(start):
@@ -74,6 +92,12 @@ ONLY_IN = [
 ]
 
 violations = []
+for folder in PROJECT:
+    for src in sources(folder):
+        for inc in raw_includes(src):
+            if inc.split("/")[0] in LIBRARIES:
+                violations.append(f"include umbra's libraries as <umbra/{inc}>: "
+                                  f"{src.relative_to(ROOT)}")
 for folder, bad, rule in RULES:
     for src in sources(folder):
         for inc, chain in reach(src).items():

@@ -1,13 +1,13 @@
 // Area lights through the renderer and the validator (docs/soft-shadows.md):
 // the frame's visibility.<i> values, supersampling, the EXR round trip, and
 // the validator's 1e-6 rule.
-#include <raster/image_io.h>
-#include <raster/render.h>
-#include <raster/validate.h>
 #include <tests/support/work_dir.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <cmath>

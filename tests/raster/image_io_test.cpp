@@ -1,10 +1,10 @@
-#include <raster/image_io.h>
-#include <raster/shading.h>
 #include <tests/support/file_size_limit.h>
-#include <util/input_error.h>
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/shading.h>
+#include <umbra/util/input_error.h>
 
 #include <cmath>
 #include <cstdint>

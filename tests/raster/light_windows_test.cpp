@@ -5,17 +5,17 @@
 // (spheres round the eye, behind it, grazing pixel rays, tiny and wide
 // fields of view, coordinates far from the origin); the volume and ray
 // renders with windows are compared byte for byte with those without.
-#include <geometry/io/scene_json.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/sample_ray.h>
-#include <raster/light_windows.h>
-#include <raster/render.h>
-#include <raster/validate.h>
 #include <tests/support/many_light_scenes.h>
 #include <tests/support/rational_vec.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/light_windows.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <algorithm>
 #include <cmath>

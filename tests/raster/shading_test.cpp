@@ -1,6 +1,5 @@
-#include <raster/shading.h>
-
 #include <gtest/gtest.h>
+#include <umbra/raster/shading.h>
 
 namespace umbra::raster {
 namespace {

@@ -1,8 +1,7 @@
 #pragma once
 // What the bad-input tests ask of a thrown InputError.
-#include <util/input_error.h>
-
 #include <gtest/gtest.h>
+#include <umbra/util/input_error.h>
 
 #include <string>
 

@@ -2,8 +2,8 @@
 // Scenes with several lights and L-twisted polygons, for the tests that
 // build volumes and eye counts on several threads and expect the one-thread
 // answer.
-#include <geometry/io/scene_json.h>
-#include <geometry/scene.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/scene.h>
 
 #include <cmath>
 #include <random>

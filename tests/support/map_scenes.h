@@ -2,11 +2,12 @@
 // Scenes and helpers the shadow-map tests share: a floor with a box standing
 // on it, lights, map render options, scoring against the oracle, and where
 // the oracle's shadow edges lie.
-#include <geometry/scene.h>
-#include <raster/frame.h>
-#include <raster/render.h>
-#include <raster/validate.h>
 #include <tests/support/scene_builders.h>
+
+#include <umbra/geometry/scene.h>
+#include <umbra/raster/frame.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <algorithm>
 

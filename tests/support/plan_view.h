@@ -2,7 +2,7 @@
 // Regions on a horizontal receiver (y constant) seen from above: which one
 // holds a point, and how far the point is from its outline (tests that
 // compare footprints with the oracle skip points near rounded boundaries).
-#include <geometry/vec3.h>
+#include <umbra/geometry/vec3.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // Test scenes built by hand: a model that is one polygon.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <string>
 #include <utility>

@@ -1,10 +1,9 @@
 #pragma once
 // Exact rational 3-vectors (CGAL::Exact_rational) for the brute-force
 // references of the geometry tests: every double is taken as its exact value.
-#include <geometry/exact/predicates.h>
-#include <geometry/vec3.h>
-
 #include <CGAL/Exact_rational.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/vec3.h>
 
 namespace umbra::geometry::test {
 

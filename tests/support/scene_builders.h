@@ -2,7 +2,7 @@
 // Models the tests build by hand, in one convention: boxes have vertex k at
 // (k&1 ? hi.x : lo.x, k&2 ? hi.y : lo.y, k&4 ? hi.z : lo.z) and six quads,
 // counter-clockwise seen from outside, in the order of BoxFace.
-#include <geometry/scene.h>
+#include <umbra/geometry/scene.h>
 
 #include <cstddef>
 #include <cstdint>

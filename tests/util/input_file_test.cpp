@@ -2,15 +2,15 @@
 // of bounded size, read with its errors reported as bad input. Before,
 // /dev/zero and /dev/urandom (or a link to them) were read until memory ran
 // out, a FIFO blocked forever, and an EIO ended in "internal error".
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/scene_json.h>
 #include <tests/support/input_error_matchers.h>
 #include <tests/support/work_dir.h>
-#include <util/input_error.h>
-#include <util/input_file.h>
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/input_error.h>
+#include <umbra/util/input_file.h>
 
 #include <filesystem>
 #include <fstream>

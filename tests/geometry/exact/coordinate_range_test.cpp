@@ -3,14 +3,14 @@
 // volumes, the scanline or the export then failed with "internal error"
 // (exit 3); a subnormal directional light normalized to NaN. Now the loader
 // refuses them, naming the field.
-#include <geometry/exact/coordinate_range.h>
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/scene_json.h>
 #include <tests/geometry/io/gltf_fixture.h>
 #include <tests/support/input_error_matchers.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/input_error.h>
 
 #include <string>
 

@@ -1,10 +1,10 @@
 // Every predicate must equal exact rational arithmetic, including on
 // degenerate input (coplanar, collinear, points at infinity, huge and tiny
 // coordinates). The reference below computes with CGAL::Exact_rational.
-#include <geometry/exact/predicates.h>
 #include <tests/support/rational_vec.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/predicates.h>
 
 #include <random>
 

@@ -5,16 +5,16 @@
 // text. The scene is built here: the floor [-10, 10]² at y = 0 and the square
 // [-1, 1]² at y = 1 under a point light at (0, 2, 0), whose shadow is the
 // square [-2, 2]² (tests/geometry/footprint/footprint_test.cpp).
-#include <geometry/export/footprint_export.h>
-#include <geometry/footprint/footprint.h>
 #include <tests/support/openmesh_ply.h>
 #include <tests/support/polygon_model.h>
-#include <util/input_error.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <bit>

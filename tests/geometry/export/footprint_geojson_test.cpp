@@ -4,15 +4,15 @@
 // the refusals. Coordinates themselves are checked against an independent
 // formula in geodetic_frame_test.cpp and by GDAL in CTest
 // (footprint.geojson_read_back).
-#include <geometry/export/footprint_export.h>
-#include <geometry/export/footprint_geojson.h>
-#include <geometry/export/geodetic_frame.h>
-#include <geometry/footprint/footprint.h>
 #include <tests/support/polygon_model.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/export/footprint_geojson.h>
+#include <umbra/geometry/export/geodetic_frame.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/util/input_error.h>
 
 #include <cmath>
 #include <numbers>

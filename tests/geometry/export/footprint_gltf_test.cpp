@@ -4,15 +4,15 @@
 // without loss (the triangles' areas add up to the regions'), facing the
 // receiver's front. And the triangulation itself on rings a fan would get
 // wrong.
-#include <geometry/export/footprint_export.h>
-#include <geometry/export/polygon_triangulation.h>
-#include <geometry/footprint/footprint.h>
 #include <tests/support/polygon_model.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/export/polygon_triangulation.h>
+#include <umbra/geometry/footprint/footprint.h>
 #include <unistd.h>
 
 #include <algorithm>

@@ -2,15 +2,14 @@
 // does not share code with: assimp (Debian's libassimp: meshes, materials,
 // triangles, positions, node metadata) and tinygltf's raw accessors (the
 // per-vertex custom attributes, which assimp 5.2 drops).
-#include <geometry/export/volume_export.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/volumes/builder.h>
-#include <util/input_error.h>
-
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
+#include <umbra/geometry/export/volume_export.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/util/input_error.h>
 
 #include <cstring>
 #include <filesystem>

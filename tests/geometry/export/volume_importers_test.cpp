@@ -4,18 +4,18 @@
 // the ASCII PLY read back exactly through umbra's reader and OpenMesh's.
 // Expected counts come from the volumes themselves, never from the files.
 // tests/cli/volume_meshio_check.py reads the same files with meshio.
-#include <geometry/export/volume_export.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/volumes/builder.h>
 #include <tests/support/openmesh_ply.h>
 #include <tests/support/work_dir.h>
-#include <util/input_error.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/volume_export.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/util/input_error.h>
 
 #include <bit>
 #include <cmath>

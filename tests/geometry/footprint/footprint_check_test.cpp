@@ -1,14 +1,14 @@
 // The footprint checker (`umbra validate --footprint`): umbra's own
 // footprints pass it, written to PLY and read back; each kind of damage a
 // file can carry is caught and named.
-#include <geometry/export/footprint_export.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/footprint_check.h>
-#include <geometry/io/footprint_reader.h>
 #include <tests/support/polygon_model.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/footprint_check.h>
+#include <umbra/geometry/io/footprint_reader.h>
+#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <random>

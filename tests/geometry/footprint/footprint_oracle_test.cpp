@@ -2,12 +2,12 @@
 // vertices on a coarse grid (so that lights land on their vertices, edges
 // and planes), lights on the same grid. The floor is the receiver and casts
 // nothing, so the oracle can be asked directly from points on it.
-#include <geometry/export/footprint_export.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/oracle/shadow_oracle.h>
 #include <tests/support/plan_view.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,13 +5,13 @@
 // y = 0; the point light at (0, 4, 0), so the square [-1, 1]² at y = 1
 // shadows [-4/3, 4/3]² and the square [0, 2] × [-1, 1] at y = 2 shadows
 // [0, 4] × [-2, 2].
-#include <geometry/export/footprint_export.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/footprint_check.h>
-#include <geometry/io/footprint_reader.h>
 #include <tests/support/polygon_model.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/footprint_check.h>
+#include <umbra/geometry/io/footprint_reader.h>
 
 #include <algorithm>
 #include <map>

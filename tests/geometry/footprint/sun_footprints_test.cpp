@@ -1,17 +1,17 @@
 // The sun over a series (docs/sun.md "Time series", "Sun hours"): each
 // step's footprint is compute_footprints' for the sun alone, and sun hours
 // agree at interior points with the exact oracle asked step by step.
-#include <geometry/export/footprint_export.h>
-#include <geometry/footprint/footprint.h>
-#include <geometry/footprint/footprint_check.h>
-#include <geometry/footprint/sun_footprints.h>
-#include <geometry/io/footprint_reader.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/sun/sun_series.h>
 #include <tests/support/plan_view.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/footprint/footprint_check.h>
+#include <umbra/geometry/footprint/sun_footprints.h>
+#include <umbra/geometry/io/footprint_reader.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/sun/sun_series.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
 // Scenes without a camera (issue 24): refused by default, loaded with
 // SceneLoadOptions::require_camera false for what needs no eye (shadow
 // volumes), whose bounds and reach then leave the placeholder eye out.
-#include <geometry/box.h>
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/scene_json.h>
-#include <geometry/volumes/far_ends.h>
 #include <tests/geometry/io/gltf_fixture.h>
 #include <tests/support/input_error_matchers.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/box.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/geometry/volumes/far_ends.h>
 
 #include <string>
 

@@ -2,10 +2,10 @@
 // after the file's transform, objects in the file's order, polygons named
 // by their semantics, LoD choice, and surfaces with holes triangulated with
 // exactly the area of the outer ring minus the holes.
-#include <geometry/io/cityjson_reader.h>
 #include <tests/support/rational_vec.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/cityjson_reader.h>
 
 #include <string>
 #include <vector>

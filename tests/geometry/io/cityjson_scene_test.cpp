@@ -1,11 +1,11 @@
 // `cityjson` model entries of JSON scenes (geometry/io/scene_json.cpp): one
 // model per CityObject, the entry's fields on each, errors prefixed by the
 // scene file and the model field; and data/scenes/city/block.json.
-#include <geometry/io/scene_json.h>
 #include <tests/support/input_error_matchers.h>
 #include <tests/support/work_dir.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/scene_json.h>
 
 #include <algorithm>
 #include <filesystem>

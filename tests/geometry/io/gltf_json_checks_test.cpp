@@ -4,15 +4,15 @@
 // a lexical prefix test (../ and links escaped it, and the bytes read came
 // back four at a time in index errors), 20,000 levels of `extras` overflowed
 // tinygltf's stack (SIGSEGV), and the row 12 files loaded silently changed.
-#include <geometry/io/gltf_json_checks.h>
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/scene_json.h>
 #include <tests/geometry/io/gltf_fixture.h>
 #include <tests/support/input_error_matchers.h>
 #include <tests/support/work_dir.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/gltf_json_checks.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/input_error.h>
 
 #include <filesystem>
 #include <string>

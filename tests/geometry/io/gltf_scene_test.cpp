@@ -1,13 +1,13 @@
 // glTF scenes and meshes: exact vertices, transforms, lights and camera from
 // small files the tests write themselves, and one InputError naming the file
 // and the glTF JSON path for each kind of malformed input.
-#include <geometry/io/gltf_scene.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/scene_json.h>
 #include <tests/geometry/io/gltf_fixture.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/gltf_scene.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/input_error.h>
 
 #include <cmath>
 #include <filesystem>

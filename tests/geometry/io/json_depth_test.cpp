@@ -1,7 +1,6 @@
 // json_nesting_depth: brackets counted outside strings only (issue 17, row 2).
-#include <geometry/io/json_depth.h>
-
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/json_depth.h>
 
 #include <string>
 

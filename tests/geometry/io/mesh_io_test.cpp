@@ -2,11 +2,11 @@
 // with its file and line (or byte), and the real files of assimp-testmodels.
 // Over 500 lines: one suite per format would repeat the shared fixtures;
 // the cases are short and each names the fault it pins.
-#include <geometry/io/mesh_io.h>
 #include <tests/support/input_error_matchers.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/util/input_error.h>
 
 #include <bit>
 #include <cmath>

@@ -2,12 +2,12 @@
 // is quadratic in a polygon's size; a million vertices would take ~19 h)
 // and an OBJ face of 900k indices needed 3.4 GB, then exit 3. Every reader
 // now refuses a face of more than kMaxPolygonVertices before storing it.
-#include <geometry/io/mesh_io.h>
-#include <geometry/io/scene_json.h>
 #include <tests/support/input_error_matchers.h>
-#include <util/input_error.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/input_error.h>
 
 #include <cmath>
 #include <string>

@@ -1,6 +1,5 @@
-#include <geometry/io/transform.h>
-
 #include <gtest/gtest.h>
+#include <umbra/geometry/io/transform.h>
 
 #include <cmath>
 #include <numbers>

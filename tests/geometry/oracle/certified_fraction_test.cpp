@@ -5,13 +5,13 @@
 // floor, lights straddling hit polygons and samples on occluders, near-
 // parallel blockers and lights whose vertices lie in occluders' planes.
 // y is up; the floor is y = 0.
-#include <geometry/oracle/area_light_pieces.h>
-#include <geometry/oracle/covered_area_sweep.h>
-#include <geometry/oracle/pyramid_filter.h>
-#include <geometry/oracle/visible_fraction.h>
 #include <tests/support/area_light_scenes.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/oracle/area_light_pieces.h>
+#include <umbra/geometry/oracle/covered_area_sweep.h>
+#include <umbra/geometry/oracle/pyramid_filter.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
 
 #include <cmath>
 #include <limits>

@@ -3,11 +3,11 @@
 // mean of a split light, Monte Carlo over the exact point-light oracle) and
 // the samples DESIGN.md counts apart, on hand-built scenes. y is up; the
 // floor is y = 0.
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/oracle/visible_fraction.h>
 #include <tests/support/area_light_scenes.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
 
 #include <algorithm>
 #include <cmath>

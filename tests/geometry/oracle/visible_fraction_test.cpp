@@ -4,11 +4,11 @@
 // visible_fraction_properties_test.cpp). y is up; the floor
 // is y = 0. Every sample ray below meets the floor at t = 1 exactly, at the
 // intended point H; the sample point is P = H - ε·d.
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/oracle/visible_fraction.h>
 #include <tests/support/area_light_scenes.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 // build_shadow_volumes builds lights on several threads and puts their
 // parts together in light order: the result must be the one-thread result
 // to the bit, twisted groups renumbered as one pass over the lights would.
-#include <geometry/volumes/builder.h>
 #include <tests/support/many_light_scenes.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/volumes/builder.h>
 
 #include <bit>
 #include <cstdint>

@@ -5,19 +5,19 @@
 //   any point outside every volume to a point X is the number of polygons
 //   shadowing X (the oracle's answer), whichever start point is chosen;
 // - the eye's starting counts equal that same number at the eye.
-#include <geometry/exact/predicates.h>
-#include <geometry/export/volume_export.h>
-#include <geometry/io/mesh_io.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/volumes/builder.h>
-#include <geometry/volumes/eye_start.h>
-#include <geometry/volumes/far_ends.h>
-#include <geometry/volumes/model_reach.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/export/volume_export.h>
+#include <umbra/geometry/io/mesh_io.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/volumes/builder.h>
+#include <umbra/geometry/volumes/eye_start.h>
+#include <umbra/geometry/volumes/far_ends.h>
+#include <umbra/geometry/volumes/model_reach.h>
 
 #include <bit>
 #include <cmath>

@@ -2,10 +2,10 @@
 // polygon and the nb_c of every edge of random lattice meshes, under lights
 // placed where decisions degenerate (on a vertex, on an edge's line, in a
 // face's plane, between vertices), at scales from 1e-6 to 1e6.
-#include <geometry/volumes/contour.h>
 #include <tests/support/rational_vec.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/volumes/contour.h>
 
 #include <map>
 #include <random>

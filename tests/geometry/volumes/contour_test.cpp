@@ -1,7 +1,7 @@
-#include <geometry/volumes/contour.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/volumes/contour.h>
 
 #include <algorithm>
 #include <map>

@@ -1,8 +1,7 @@
 // model_edges: distinct edges by position, in first-listed order, with every
 // polygon's use of each and its direction.
-#include <geometry/volumes/model_edges.h>
-
 #include <gtest/gtest.h>
+#include <umbra/geometry/volumes/model_edges.h>
 
 #include <tuple>
 #include <vector>

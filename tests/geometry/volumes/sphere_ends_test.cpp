@@ -1,11 +1,11 @@
 // Far ends on a sphere about a point light (geometry/volumes/sphere_ends.h) and the
 // exact directions they are built from (geometry/exact/constructions.h),
 // checked against exact rational arithmetic where doubles cancel to noise.
-#include <geometry/exact/constructions.h>
-#include <geometry/volumes/sphere_ends.h>
 #include <tests/support/rational_vec.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/constructions.h>
+#include <umbra/geometry/volumes/sphere_ends.h>
 
 #include <cmath>
 #include <random>

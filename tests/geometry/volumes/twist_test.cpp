@@ -7,11 +7,11 @@
 //    enumerating the vertices of its feasible polyhedron;
 //  - facing: rays from L through many sample points, each intersected with
 //    every fan triangle by Cramer's rule, counting signed hits.
-#include <geometry/exact/predicates.h>
-#include <geometry/volumes/twist.h>
 #include <tests/support/rational_vec.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/volumes/twist.h>
 
 #include <algorithm>
 #include <array>

@@ -3,17 +3,17 @@
 // casts on itself and has no acne where a depth map without bias is covered
 // in it; Williams' post-process decides shadows as the depth map does and
 // keeps highlights inside them.
-#include <geometry/exact/visible_surface.h>
-#include <geometry/oracle/scene_index.h>
-#include <geometry/oracle/shadow_oracle.h>
-#include <geometry/sample_ray.h>
-#include <raster/methods/shadow_map.h>
-#include <raster/render.h>
-#include <raster/validate.h>
 #include <tests/support/map_scenes.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/exact/visible_surface.h>
+#include <umbra/geometry/oracle/scene_index.h>
+#include <umbra/geometry/oracle/shadow_oracle.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -3,14 +3,14 @@
 // far from it, 0 under its middle, a penumbra across its shadow's edge that
 // falls monotonically and widens with the light; and the map method renders
 // area lights with it, scored against the exact fraction.
-#include <raster/image_io.h>
-#include <raster/methods/shadow_lookup.h>
-#include <raster/methods/shadow_map.h>
-#include <raster/render.h>
-#include <raster/validate.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/methods/shadow_lookup.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <cmath>
 #include <vector>

@@ -3,15 +3,15 @@
 // bias, peter-panning with too much), that resolution buys accuracy, that a
 // point light's cube shadows every direction, and that the output does not
 // depend on the thread count.
-#include <geometry/sample_ray.h>
-#include <raster/methods/shadow_lookup.h>
-#include <raster/methods/shadow_map.h>
-#include <raster/render.h>
-#include <raster/validate.h>
 #include <tests/support/map_scenes.h>
 #include <tests/support/scene_builders.h>
 
 #include <gtest/gtest.h>
+#include <umbra/geometry/sample_ray.h>
+#include <umbra/raster/methods/shadow_lookup.h>
+#include <umbra/raster/methods/shadow_map.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
 
 #include <cmath>
 #include <limits>
