@@ -5,6 +5,10 @@
 // scripts/chart.sh is the documented command (docs/methods.md).
 #include <CLI/CLI.hpp>
 #include <fuzz/scene_export.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/raster/image_io.h>
+#include <umbra/raster/methods/map_variants.h>
+#include <umbra/util/atomic_files.h>
 
 #include "bench_scene.h"
 #include "chart_run.h"
@@ -12,10 +16,6 @@
 #include "error_picture.h"
 #include "sweep_scenes.h"
 #include <fmt/format.h>
-#include <umbra/geometry/io/scene_json.h>
-#include <umbra/raster/image_io.h>
-#include <umbra/raster/methods/map_variants.h>
-#include <umbra/util/atomic_files.h>
 
 #include <algorithm>
 #include <cstdio>

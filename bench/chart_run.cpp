@@ -1,8 +1,9 @@
 #include "chart_run.h"
 
-#include <fmt/format.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/methods/map_variants.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>

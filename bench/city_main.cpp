@@ -6,9 +6,9 @@
 //   umbra_city --blocks 31 --lamps 0 -o city-0.json     # no lamp: the plain pass
 #include <CLI/CLI.hpp>
 #include <fuzz/scene_export.h>
+#include <umbra/util/atomic_files.h>
 
 #include "city_scene.h"
-#include <umbra/util/atomic_files.h>
 
 #include <cstdio>
 #include <exception>

@@ -5,13 +5,13 @@
 // error over the receivers that face the sun, at each resolution. Prints a
 // Markdown table; scripts/footprint-bench.sh is the documented command.
 #include <CLI/CLI.hpp>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/util/phase_clock.h>
 
 #include "bench_scene.h"
 #include "pixel_count.h"
 #include <fmt/format.h>
-#include <umbra/geometry/footprint/footprint.h>
-#include <umbra/geometry/io/scene_json.h>
-#include <umbra/util/phase_clock.h>
 
 #include <algorithm>
 #include <cmath>

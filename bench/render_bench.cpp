@@ -22,14 +22,14 @@
 // band) pairs skipped, and the seconds of each phase of the last run. The ratio shadowed/plain is
 // computed by scripts/bench_table.py from the JSON output.
 #include <fuzz/scene_export.h>
+#include <umbra/raster/render.h>
+#include <umbra/raster/validate.h>
+#include <umbra/util/atomic_files.h>
 
 #include "bench_scene.h"
 #include "city_scene.h"
 #include "zbuffer.h"
 #include <benchmark/benchmark.h>
-#include <umbra/raster/render.h>
-#include <umbra/raster/validate.h>
-#include <umbra/util/atomic_files.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -2,9 +2,10 @@
 // on the files given on the command line (any scene JSON; the bench's dumped
 // scenes, UMBRA_BENCH_DUMP, hold inline meshes of a few MB). The text is read
 // once, outside the timing, so only parsing and validation are measured.
-#include <benchmark/benchmark.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_file.h>
+
+#include <benchmark/benchmark.h>
 
 #include <filesystem>
 #include <string>

@@ -6,13 +6,13 @@
 // against the exact fractions is measured over the receivers facing the
 // sun. Prints a Markdown table; scripts/sun-year-bench.sh is the command.
 #include <CLI/CLI.hpp>
-
-#include "pixel_count.h"
-#include <fmt/format.h>
 #include <umbra/geometry/footprint/sun_footprints.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/sun/sun_series.h>
 #include <umbra/util/phase_clock.h>
+
+#include "pixel_count.h"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -1,14 +1,14 @@
 #include <cli/batch_command.h>
 #include <cli/exit_codes.h>
 #include <cli/umbra_app.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/mesh_text.h>
 #include <umbra/geometry/io/json_depth.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #include <cli/csv_parts.h>
 #include <cli/part_times.h>
-
-#include <fmt/format.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <fmt/format.h>
 
 #include <string_view>
 

@@ -5,15 +5,15 @@
 #include <cli/parse_checks.h>
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/footprint_export.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/atomic_files.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>

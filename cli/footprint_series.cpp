@@ -4,9 +4,6 @@
 #include <cli/parse_checks.h>
 #include <cli/progress_bar.h>
 #include <cli/stats_json.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/footprint_geojson.h>
 #include <umbra/geometry/export/sun_series_export.h>
 #include <umbra/geometry/footprint/sun_footprints.h>
@@ -16,6 +13,9 @@
 #include <umbra/util/input_error.h>
 #include <umbra/util/phase_clock.h>
 #include <umbra/util/progress.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>

@@ -1,12 +1,12 @@
 #include <cli/geojson_parts.h>
 #include <cli/part_times.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/footprint_geojson.h>
 #include <umbra/geometry/io/json_depth.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <set>

@@ -1,7 +1,7 @@
 #include <cli/memory_limit.h>
+#include <umbra/util/input_error.h>
 
 #include <fmt/format.h>
-#include <umbra/util/input_error.h>
 
 #include <charconv>
 #include <cmath>

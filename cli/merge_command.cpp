@@ -5,10 +5,10 @@
 #include <cli/merge_command.h>
 #include <cli/output_files.h>
 #include <cli/parse_checks.h>
-
-#include <fmt/format.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <filesystem>
 #include <limits>

@@ -1,9 +1,9 @@
 #include <cli/output_files.h>
+#include <umbra/util/atomic_files.h>
+#include <umbra/util/input_error.h>
 
 #include <fmt/format.h>
 #include <sys/stat.h>
-#include <umbra/util/atomic_files.h>
-#include <umbra/util/input_error.h>
 #include <unistd.h>
 
 #include <algorithm>

@@ -1,5 +1,4 @@
 #include <cli/parse_checks.h>
-
 #include <umbra/util/input_error.h>
 
 #include <charconv>

@@ -4,8 +4,9 @@
 // within a part, and each part starts after the previous one ended. ISO
 // 8601 texts in one offset (a series labels every step in START's) sort as
 // text.
-#include <fmt/format.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <filesystem>
 #include <string>

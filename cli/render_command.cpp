@@ -6,8 +6,6 @@
 #include <cli/render_command.h>
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
-
-#include <fmt/format.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/raster/methods/map_variants.h>
@@ -15,6 +13,8 @@
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <charconv>
 #include <chrono>

@@ -1,7 +1,7 @@
 #include <cli/scene_loading.h>
+#include <umbra/geometry/io/scene_json.h>
 
 #include <fmt/format.h>
-#include <umbra/geometry/io/scene_json.h>
 
 #include <cstdio>
 

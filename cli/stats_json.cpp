@@ -1,6 +1,5 @@
 #include <cli/output_files.h>
 #include <cli/stats_json.h>
-
 #include <umbra/raster/methods/map_variants.h>
 #include <umbra/util/cpu_budget.h>
 

@@ -2,10 +2,11 @@
 // The JSON the verbs print or write: render and volume statistics
 // (--stats-json) and validation reports (--json). Field names are documented
 // in docs/cli.md.
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/volumes/shadow_volume.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <optional>

@@ -3,14 +3,14 @@
 #include <cli/parse_checks.h>
 #include <cli/stats_json.h>
 #include <cli/sunlight_command.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/footprint/sun_footprints.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/sun/sun_series.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>

@@ -6,11 +6,11 @@
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
-
-#include <fmt/format.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/raster/validate.h>
+
+#include <fmt/format.h>
 
 #include <array>
 #include <chrono>

@@ -4,14 +4,14 @@
 #include <cli/output_files.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/footprint/footprint_check.h>
 #include <umbra/geometry/io/footprint_reader.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>

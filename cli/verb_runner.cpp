@@ -1,9 +1,9 @@
 #include <cli/exit_codes.h>
 #include <cli/verb_runner.h>
-
-#include <fmt/format.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/temporary_files.h>
+
+#include <fmt/format.h>
 
 #include <csignal>
 #include <cstdio>

@@ -1,10 +1,10 @@
 #include <CLI/CLI.hpp>
 #include <cli/version_text.h>
+#include <umbra/geometry/library_versions.h>
+#include <umbra/raster/library_versions.h>
 
 #include <fmt/format.h>
 #include <oneapi/tbb/version.h>
-#include <umbra/geometry/library_versions.h>
-#include <umbra/raster/library_versions.h>
 
 #include <vector>
 

@@ -5,14 +5,14 @@
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/volume_command.h>
-
-#include <fmt/format.h>
 #include <umbra/geometry/export/volume_export.h>
 #include <umbra/geometry/io/mesh_lexer.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cstdio>

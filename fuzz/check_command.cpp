@@ -5,9 +5,9 @@
 #include <fuzz/degenerate_scenes.h>
 #include <fuzz/scene_check.h>
 #include <fuzz/scene_export.h>
+#include <umbra/util/input_error.h>
 
 #include <fmt/format.h>
-#include <umbra/util/input_error.h>
 
 #include <cstdio>
 #include <filesystem>

@@ -1,9 +1,9 @@
 #include <fuzz/check_run.h>
 #include <fuzz/scene_check.h>
 #include <fuzz/summary_merge.h>
+#include <umbra/util/phase_clock.h>
 
 #include <fmt/format.h>
-#include <umbra/util/phase_clock.h>
 
 #include <map>
 

@@ -2,7 +2,6 @@
 #include <fuzz/edge_lights.h>
 #include <fuzz/splitmix64.h>
 #include <fuzz/usable_camera.h>
-
 #include <umbra/geometry/exact/predicates.h>
 
 #include <algorithm>

@@ -15,7 +15,6 @@
 // maps draws to ranges itself (no std:: distributions, whose output differs
 // between standard libraries).
 #include <fuzz/light_placement.h>
-
 #include <umbra/geometry/scene.h>
 
 #include <cstdint>

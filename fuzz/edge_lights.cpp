@@ -1,5 +1,4 @@
 #include <fuzz/edge_lights.h>
-
 #include <umbra/geometry/exact/predicates.h>
 
 #include <vector>

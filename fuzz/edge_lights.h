@@ -7,7 +7,6 @@
 // real-model sweep share them.
 #include <fuzz/light_placement.h>
 #include <fuzz/splitmix64.h>
-
 #include <umbra/geometry/scene.h>
 
 #include <optional>

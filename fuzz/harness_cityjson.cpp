@@ -5,7 +5,6 @@
 // so that small ones also get the closed-volume check (loader_promises.h).
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-
 #include <umbra/geometry/io/cityjson_reader.h>
 #include <umbra/util/input_error.h>
 

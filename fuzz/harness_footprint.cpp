@@ -5,7 +5,6 @@
 // reports must be consistent (every region counted, no more listed than
 // failed, ok only without failures).
 #include <fuzz/harness.h>
-
 #include <umbra/geometry/footprint/footprint_check.h>
 #include <umbra/geometry/io/footprint_reader.h>
 #include <umbra/util/input_error.h>

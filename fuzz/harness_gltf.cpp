@@ -6,7 +6,6 @@
 // parse_gltf_polygon_soup (a JSON scene's "mesh": "x.glb").
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-
 #include <umbra/geometry/io/gltf_scene.h>
 #include <umbra/util/input_error.h>
 

@@ -5,7 +5,6 @@
 // At most 2^20 pixels, so that a header's claimed size cannot make the
 // fuzzer's own memory limit the finding.
 #include <fuzz/harness.h>
-
 #include <umbra/raster/image_io.h>
 #include <umbra/util/input_error.h>
 

@@ -3,7 +3,6 @@
 // InputError; a loaded soup holds finite vertices and polygons of >= 3
 // in-range indices; small soups get a shadow volume that must be closed.
 #include <fuzz/harness.h>
-
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/closure_check.h>

@@ -4,7 +4,6 @@
 #include <fuzz/harness.h>
 #include <fuzz/scene_decoder.h>
 #include <fuzz/scene_export.h>
-
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
 

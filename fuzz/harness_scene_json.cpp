@@ -4,7 +4,6 @@
 // the scene is small, must form a closed weighted cycle (loader_promises.h).
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
 

@@ -16,7 +16,6 @@
 //   neither changes under exact rescaling.
 #include <fuzz/byte_reader.h>
 #include <fuzz/harness.h>
-
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/volumes/twist.h>
 

@@ -5,7 +5,6 @@
 #include <fuzz/harness.h>
 #include <fuzz/scene_decoder.h>
 #include <fuzz/scene_export.h>
-
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/closure_check.h>
 

@@ -5,7 +5,6 @@
 // its kind names exactly or only up to rounding. Reports classify failures by
 // these; tests check the geometry against them.
 #include <fuzz/placement_geometry.h>
-
 #include <umbra/geometry/vec3.h>
 
 #include <string>

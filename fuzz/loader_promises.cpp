@@ -1,6 +1,5 @@
 #include <fuzz/harness.h>
 #include <fuzz/loader_promises.h>
-
 #include <umbra/geometry/exact/coordinate_range.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/volumes/builder.h>

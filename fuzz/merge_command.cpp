@@ -3,9 +3,9 @@
 #include <fuzz/merge_command.h>
 #include <fuzz/summary_merge.h>
 #include <fuzz/sweep_report.h>
+#include <umbra/util/input_file.h>
 
 #include <fmt/format.h>
-#include <umbra/util/input_file.h>
 
 namespace umbra::cli {
 

@@ -1,5 +1,4 @@
 #include <fuzz/mesh_catalog.h>
-
 #include <umbra/util/input_error.h>
 
 #include <algorithm>

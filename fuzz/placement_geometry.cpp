@@ -1,6 +1,5 @@
 #include <fuzz/placement_geometry.h>
 #include <fuzz/splitmix64.h>
-
 #include <umbra/geometry/exact/predicates.h>
 
 #include <bit>

@@ -4,9 +4,9 @@
 #include <fuzz/real_command.h>
 #include <fuzz/real_sweep.h>
 #include <fuzz/sweep_report.h>
+#include <umbra/util/input_error.h>
 
 #include <fmt/format.h>
-#include <umbra/util/input_error.h>
 
 #include <cstdio>
 

@@ -2,10 +2,10 @@
 #include <fuzz/real_scenes.h>
 #include <fuzz/splitmix64.h>
 #include <fuzz/usable_camera.h>
-
-#include <fmt/format.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/oracle/bvh.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>

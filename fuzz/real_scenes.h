@@ -6,7 +6,6 @@
 // mesh's vertices and its file name, never on which other meshes a run
 // includes, so a failure's recipe names one file.
 #include <fuzz/degenerate_scenes.h>
-
 #include <umbra/geometry/scene.h>
 
 #include <cstdint>

@@ -3,11 +3,11 @@
 #include <fuzz/real_sweep.h>
 #include <fuzz/scene_export.h>
 #include <fuzz/unit_box.h>
-
-#include <fmt/format.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <fstream>

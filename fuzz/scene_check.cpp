@@ -1,5 +1,4 @@
 #include <fuzz/scene_check.h>
-
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/closure_check.h>
 #include <umbra/raster/validate.h>

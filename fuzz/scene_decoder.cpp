@@ -1,5 +1,4 @@
 #include <fuzz/scene_decoder.h>
-
 #include <umbra/geometry/sample_ray.h>
 
 #include <array>

@@ -4,7 +4,6 @@
 // lights placed where exact predicates meet their degenerate cases: on a
 // vertex, on an edge's line, in a face's plane, along an edge or a face.
 #include <fuzz/byte_reader.h>
-
 #include <umbra/geometry/scene.h>
 
 namespace umbra::fuzz {

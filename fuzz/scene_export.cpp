@@ -1,7 +1,4 @@
 #include <fuzz/scene_export.h>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/exact/visible_surface.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/oracle/scene_index.h>
@@ -9,6 +6,9 @@
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <bit>
 #include <fstream>

@@ -1,7 +1,6 @@
 #include <cli/parse_checks.h>
 #include <fuzz/junit_report.h>
 #include <fuzz/summary_files.h>
-
 #include <umbra/util/atomic_files.h>
 
 namespace umbra::cli {

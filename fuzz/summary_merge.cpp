@@ -1,7 +1,7 @@
 #include <fuzz/summary_merge.h>
+#include <umbra/util/input_error.h>
 
 #include <fmt/format.h>
-#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <cmath>

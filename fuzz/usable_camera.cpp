@@ -1,5 +1,4 @@
 #include <fuzz/usable_camera.h>
-
 #include <umbra/geometry/sample_ray.h>
 
 namespace umbra::fuzz {

@@ -1,10 +1,11 @@
+#include <umbra/geometry/library_versions.h>
+
 #include <CGAL/version.h>
 #include <OpenMesh/Core/System/config.h>
 #include <fmt/format.h>
 #include <gmp.h>
 #include <mpfr.h>
 #include <nlohmann/json.hpp>
-#include <umbra/geometry/library_versions.h>
 
 namespace umbra::geometry {
 

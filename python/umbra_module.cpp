@@ -3,9 +3,6 @@
 // shadow volumes, ask the exact oracle, partition receivers into exact
 // footprints; errors become umbra.InputError with
 // umbra's one-line message. docs/python.md.
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
 #include <umbra/geometry/exact/visible_surface.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/io/scene_json.h>
@@ -15,6 +12,10 @@
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/raster/render.h>
 #include <umbra/util/input_error.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <cmath>
 #include <memory>

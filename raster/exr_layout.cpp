@@ -1,5 +1,6 @@
-#include <fmt/format.h>
 #include <umbra/raster/exr_layout.h>
+
+#include <fmt/format.h>
 
 #include <charconv>
 

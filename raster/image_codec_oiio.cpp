@@ -3,9 +3,10 @@
 // first image read or written. It encodes to memory and decodes from memory;
 // files are read and written by raster/image_io.cpp under docs/security.md's
 // rules, so nothing here touches the file system.
+#include <umbra/raster/image_codec.h>
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <umbra/raster/image_codec.h>
 
 #include <algorithm>
 #include <memory>

@@ -1,4 +1,3 @@
-#include <fmt/format.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
@@ -7,6 +6,8 @@
 #include <umbra/util/file_names.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,11 @@
-#include <fmt/format.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_write.h>
 #include <umbra/raster/shading.h>
 #include <umbra/util/atomic_files.h>
 #include <umbra/util/file_names.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <string>

@@ -1,4 +1,3 @@
-#include <fmt/format.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/volumes/contour.h>
 #include <umbra/geometry/volumes/model_tables.h>
@@ -7,6 +6,8 @@
 #include <umbra/raster/render.h>
 #include <umbra/raster/supersample.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <cmath>
 #include <stdexcept>

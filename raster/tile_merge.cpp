@@ -1,11 +1,12 @@
 // umbra merge: the frame from the tiles of `umbra render --tile I/N`.
-#include <fmt/format.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/image_write.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <charconv>

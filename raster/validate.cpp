@@ -1,5 +1,4 @@
 // umbra validate: every checked pixel's shadow.<i> against the oracle.
-#include <fmt/format.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/oracle/transmittance.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
@@ -8,6 +7,8 @@
 #include <umbra/raster/validate.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/parallel_for.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,9 @@
-#include <fcntl.h>
-#include <fmt/format.h>
 #include <umbra/util/atomic_files.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/temporary_files.h>
+
+#include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cerrno>

@@ -1,5 +1,6 @@
-#include <sched.h>
 #include <umbra/util/cpu_budget.h>
+
+#include <sched.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,9 @@
+#include <umbra/util/input_error.h>
+#include <umbra/util/input_file.h>
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
-#include <umbra/util/input_error.h>
-#include <umbra/util/input_file.h>
 #include <unistd.h>
 
 #include <cerrno>

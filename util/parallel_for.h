@@ -16,11 +16,12 @@
 // scanline's own BandScheduler stays: it hands each worker consecutive
 // bands so that its active edge lists carry on, which no generic
 // partitioner knows.
+#include <umbra/util/cpu_budget.h>
+
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
-#include <umbra/util/cpu_budget.h>
 
 #include <algorithm>
 #include <cstddef>

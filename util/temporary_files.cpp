@@ -1,4 +1,5 @@
 #include <umbra/util/temporary_files.h>
+
 #include <unistd.h>
 
 #include <array>

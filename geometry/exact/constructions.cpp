@@ -1,7 +1,8 @@
-#include <CGAL/Gmpq.h>
-#include <gmp.h>
 #include <umbra/geometry/exact/constructions.h>
 #include <umbra/geometry/exact/exact_arithmetic.h>
+
+#include <CGAL/Gmpq.h>
+#include <gmp.h>
 
 #include <algorithm>
 #include <array>

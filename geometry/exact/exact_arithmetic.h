@@ -4,9 +4,10 @@
 // over the number type; filtered_sign evaluates it in intervals (CGAL's
 // Interval_nt, rounding guarded) and, only when that cannot decide, exactly
 // (CGAL's Mpzf: exact +, -, x on doubles).
+#include <umbra/geometry/exact/predicates.h>
+
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
-#include <umbra/geometry/exact/predicates.h>
 
 namespace umbra::geometry::detail {
 

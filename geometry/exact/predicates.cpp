@@ -1,6 +1,7 @@
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <umbra/geometry/exact/exact_arithmetic.h>
 #include <umbra/geometry/exact/predicates.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 namespace umbra::geometry {
 

@@ -1,5 +1,6 @@
-#include <mpfr.h>
 #include <umbra/geometry/exact/rational_rounding.h>
+
+#include <mpfr.h>
 
 namespace umbra::geometry {
 

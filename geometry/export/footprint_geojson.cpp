@@ -4,14 +4,15 @@
 // area_m2 would not be the area the map shows). Which receivers are
 // horizontal is an exact decision, so a ground that a transform left an
 // ulp off level is reported as skipped rather than drawn slightly wrong.
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/export/footprint_geojson.h>
 #include <umbra/geometry/export/geodetic_frame.h>
 #include <umbra/geometry/export/mesh_text.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <initializer_list>

@@ -5,9 +5,10 @@
 // iteration (tests/geometry/export/geodetic_frame_test.cpp; measured worst
 // 3.6e-13 degrees, 4e-8 m, and 3.2e-8 m of height); the doubles written
 // add 1e-14 degrees (a nanometre).
-#include <proj.h>
 #include <umbra/geometry/export/geodetic_frame.h>
 #include <umbra/geometry/export/mesh_text.h>
+
+#include <proj.h>
 
 #include <cmath>
 #include <stdexcept>

@@ -4,8 +4,9 @@
 // .gltf with the buffer as a base64 data URI, or a .glb. The volume writer
 // (gltf_writer.cpp) and the footprint writer (footprint_gltf.cpp) add
 // their meshes and nodes to the document themselves.
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/vec3.h>
+
+#include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -10,10 +10,11 @@
 // (assimp 5.2, tested; Blender 3.4, as issue 24 reports), so the light and
 // face type are also the structure, as in footprint_gltf.cpp: a node, mesh
 // and named material per (light, type) (volume_groups.h).
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/gltf_buffer.h>
 #include <umbra/geometry/export/gltf_writer.h>
 #include <umbra/geometry/export/volume_groups.h>
+
+#include <nlohmann/json.hpp>
 
 #include <array>
 #include <cstdint>

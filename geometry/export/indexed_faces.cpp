@@ -1,7 +1,8 @@
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-#include <OpenMesh/Core/System/omstream.hh>
 #include <umbra/geometry/export/indexed_faces.h>
 #include <umbra/geometry/io/position_welder.h>
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,10 +1,11 @@
+#include <umbra/geometry/export/polygon_triangulation.h>
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <umbra/geometry/export/polygon_triangulation.h>
 
 #include <cmath>
 #include <optional>

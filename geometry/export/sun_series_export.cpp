@@ -1,8 +1,9 @@
-#include <fmt/format.h>
 #include <umbra/geometry/export/csv_text.h>
 #include <umbra/geometry/export/indexed_faces.h>
 #include <umbra/geometry/export/mesh_text.h>
 #include <umbra/geometry/export/sun_series_export.h>
+
+#include <fmt/format.h>
 
 #include <array>
 #include <map>

@@ -9,7 +9,6 @@
 // positions (mesh_text.h). OpenMesh still decides the connectivity
 // (indexed_faces.h), so that the file loads, face for face, into any
 // halfedge mesh — OpenMesh's reader included, with its custom properties.
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/gltf_writer.h>
 #include <umbra/geometry/export/indexed_faces.h>
 #include <umbra/geometry/export/mesh_text.h>
@@ -19,6 +18,8 @@
 #include <umbra/geometry/io/mesh_lexer.h>
 #include <umbra/util/atomic_files.h>
 #include <umbra/util/input_error.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>

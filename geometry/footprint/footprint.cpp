@@ -1,4 +1,3 @@
-#include <fmt/format.h>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/footprint/footprint.h>
@@ -12,6 +11,8 @@
 #include <umbra/geometry/volumes/contour.h>
 #include <umbra/util/parallel_for.h>
 #include <umbra/util/phase_clock.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <stdexcept>

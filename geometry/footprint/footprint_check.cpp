@@ -3,15 +3,16 @@
 // the partition's own (receiver_units.h), and the Boolean operations are
 // CGAL's Polygon_set_2 on Epeck. The only tolerance is the rounding of the
 // file's vertices, bounded from their magnitude (see rounding_of).
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_set_2.h>
-#include <fmt/format.h>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/footprint/footprint_check.h>
 #include <umbra/geometry/footprint/light_query.h>
 #include <umbra/geometry/footprint/receiver_units.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/oracle/transmittance.h>
+
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,9 @@
+#include <umbra/geometry/footprint/receiver_partition.h>
+
 #include <CGAL/Arr_extended_dcel.h>
 #include <CGAL/Arr_observer.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
-#include <umbra/geometry/footprint/receiver_partition.h>
 
 #include <algorithm>
 #include <map>

@@ -3,9 +3,10 @@
 // coordinates, and the segments on it where a light's shadow may begin or
 // end. CGAL's Epeck throughout: every point made here takes part in later
 // decisions (the arrangement's, the classification's).
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/vec3.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <array>
 #include <optional>

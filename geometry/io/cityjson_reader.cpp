@@ -5,12 +5,13 @@
 // a refusal names the file and the value's JSON path. Only what umbra uses
 // is read: unknown members (metadata, appearance, extensions "+...") are
 // ignored, as CityJSON asks of readers.
-#include <fmt/format.h>
 #include <umbra/geometry/export/polygon_triangulation.h>
 #include <umbra/geometry/io/cityjson_reader.h>
 #include <umbra/geometry/io/json_fields.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>

@@ -7,8 +7,9 @@
 // unchecked. Every failure names the glTF JSON path ("accessors[3]",
 // "meshes[0].primitives[1].indices"). Internal to geometry/io: what the
 // file's nodes, meshes, lights and camera mean to umbra is gltf_scene.cpp's.
-#include <tiny_gltf.h>
 #include <umbra/geometry/vec3.h>
+
+#include <tiny_gltf.h>
 
 #include <cstdint>
 #include <filesystem>

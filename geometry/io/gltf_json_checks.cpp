@@ -1,7 +1,8 @@
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/io/gltf_json_checks.h>
 #include <umbra/geometry/io/json_depth.h>
 #include <umbra/util/input_error.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

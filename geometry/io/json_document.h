@@ -4,8 +4,9 @@
 // simdjson's errors carry no position, so on any error the text is parsed a
 // second time by located_json.h, which names the line and column or the
 // field path. Internal to geometry/io.
-#include <simdjson.h>
 #include <umbra/geometry/io/json_path.h>
+
+#include <simdjson.h>
 
 #include <string>
 #include <string_view>

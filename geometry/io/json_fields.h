@@ -6,11 +6,12 @@
 // duplicated keys are errors, so that typos never pass. Paths are strings
 // built by the caller; the per-vertex readers of large arrays build them only
 // once something is wrong (scene_json.cpp). Internal to geometry/io.
-#include <fmt/format.h>
 #include <umbra/geometry/exact/coordinate_range.h>
 #include <umbra/geometry/io/json_document.h>
 #include <umbra/geometry/scene.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
 
 #include <bitset>
 #include <cmath>

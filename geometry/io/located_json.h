@@ -6,8 +6,9 @@
 // as its own parser would, with the path kept on the side. Scenes are read
 // by simdjson (json_document.h), which says only that something is wrong;
 // this slower pass then says where. Internal to geometry/io.
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/io/json_path.h>
+
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <string_view>

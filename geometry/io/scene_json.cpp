@@ -5,7 +5,6 @@
 // validating accessors (json_fields.h) that name each field by its path
 // ("lights[1].position"). The inline vertex and face arrays, a scene's bulk,
 // build a path only for a value that is wrong.
-#include <fmt/format.h>
 #include <umbra/geometry/exact/coordinate_range.h>
 #include <umbra/geometry/io/cityjson_reader.h>
 #include <umbra/geometry/io/gltf_scene.h>
@@ -18,6 +17,8 @@
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,8 @@
-#include <fmt/format.h>
 #include <umbra/geometry/io/json_path.h>
 #include <umbra/geometry/io/scene_sun.h>
 #include <umbra/geometry/sun/sun_light.h>
+
+#include <fmt/format.h>
 
 #include <cmath>
 

@@ -1,7 +1,8 @@
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <umbra/geometry/exact/constructions.h>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/oracle/area_light_pieces.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <cmath>

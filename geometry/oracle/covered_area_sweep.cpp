@@ -1,5 +1,6 @@
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <umbra/geometry/oracle/covered_area_sweep.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <utility>

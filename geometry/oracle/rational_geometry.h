@@ -2,11 +2,12 @@
 // Internal to geometry/oracle/: exact rational geometry for the visible
 // fraction of area lights (visible_fraction.h): exact points, planes of
 // light pieces with 2D coordinates, convex clipping, areas.
+#include <umbra/geometry/vec3.h>
+
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/gmpxx.h>
-#include <umbra/geometry/vec3.h>
 
 #include <array>
 #include <vector>

@@ -1,6 +1,7 @@
-#include <fmt/format.h>
 #include <umbra/geometry/sun/sun_light.h>
 #include <umbra/geometry/sun/sun_series.h>
+
+#include <fmt/format.h>
 
 #include <cctype>
 #include <cmath>

@@ -1,5 +1,6 @@
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <umbra/geometry/volumes/twist.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <cstddef>
 #include <optional>

@@ -3,9 +3,10 @@
 // light (docs/ray-cast.md, "Area lights"): stratified, area-preserving,
 // seeded per pixel and light so that any thread count or tiling gives the
 // same bytes.
-#include <glm/vec3.hpp>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/scene.h>
+
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>

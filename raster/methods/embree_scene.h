@@ -8,9 +8,10 @@
 // the nearest float. Embree knows nothing of the fan's parity: where fan
 // triangles of one polygon overlap (a concave or self-overlapping polygon)
 // a ray stops at the first of them, which the truth may count as a hole.
-#include <embree3/rtcore.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/raster/scanline/surface_table.h>
+
+#include <embree3/rtcore.h>
 
 #include <string>
 #include <vector>

@@ -1,7 +1,8 @@
-#include <fmt/format.h>
 #include <umbra/geometry/exact/coordinate_range.h>
 #include <umbra/raster/methods/float_range.h>
 #include <umbra/util/input_error.h>
+
+#include <fmt/format.h>
 
 namespace umbra::raster {
 

@@ -12,8 +12,6 @@
 // point light's ray is), V = unoccluded / N. The sampling is deterministic,
 // seeded per pixel and light: a render is the same bytes whatever the
 // thread count or tiling.
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/raster/light_windows.h>
 #include <umbra/raster/methods/area_light_samples.h>
@@ -23,6 +21,9 @@
 #include <umbra/raster/pixel_sample.h>
 #include <umbra/util/parallel_for.h>
 #include <umbra/util/phase_clock.h>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <atomic>

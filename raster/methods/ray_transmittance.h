@@ -7,8 +7,9 @@
 // remembered once however many of its triangles the ray hits: at an edge
 // shared by two fan triangles Embree reports both (the double hit Embree
 // users meet), which would otherwise square T. Internal to umbra_raster.
-#include <embree3/rtcore.h>
 #include <umbra/geometry/oracle/scene_index.h>
+
+#include <embree3/rtcore.h>
 
 #include <cstdint>
 #include <span>

@@ -7,10 +7,10 @@
 #include <fuzz/placement_geometry.h>
 #include <fuzz/scene_export.h>
 #include <tests/fuzz/exact_reference.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/io/scene_json.h>
+
+#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>

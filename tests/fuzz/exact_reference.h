@@ -4,7 +4,6 @@
 // exact value) for "strictly inside a segment", and geometry's exact
 // predicates for lines and planes.
 #include <tests/support/rational_vec.h>
-
 #include <umbra/geometry/exact/predicates.h>
 
 namespace umbra::fuzz::test {

@@ -8,11 +8,11 @@
 #include <fuzz/unit_box.h>
 #include <tests/fuzz/exact_reference.h>
 #include <tests/fuzz/test_meshes.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/io/scene_json.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>

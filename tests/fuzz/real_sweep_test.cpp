@@ -5,11 +5,11 @@
 #include <fuzz/real_sweep.h>
 #include <fuzz/sweep_report.h>
 #include <tests/fuzz/test_meshes.h>
+#include <umbra/geometry/io/scene_json.h>
+#include <umbra/raster/validate.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <umbra/geometry/io/scene_json.h>
-#include <umbra/raster/validate.h>
 
 #include <stdexcept>
 

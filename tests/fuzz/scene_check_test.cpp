@@ -4,10 +4,10 @@
 // the light its message names. These are properties of the tool, true
 // before and after any fix to the volume code.
 #include <fuzz/scene_check.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <stdexcept>
 

@@ -9,9 +9,9 @@
 #include <fuzz/summary_merge.h>
 #include <fuzz/sweep_report.h>
 #include <tests/fuzz/test_meshes.h>
+#include <umbra/util/input_error.h>
 
 #include <gtest/gtest.h>
-#include <umbra/util/input_error.h>
 
 #include <stdexcept>
 

@@ -5,10 +5,10 @@
 // oracle's at every scored sample, and its bytes must not depend on the
 // thread count.
 #include <fuzz/degenerate_scenes.h>
-
-#include <gtest/gtest.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>

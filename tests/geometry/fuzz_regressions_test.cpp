@@ -1,12 +1,13 @@
 // Findings of the fuzz harnesses (fuzz/regressions/), each as a named test
 // with its geometry inline. The raw inputs are replayed by fuzz.replay.*.
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/contour.h>
 #include <umbra/geometry/volumes/twist.h>
+
+#include <gtest/gtest.h>
 
 namespace umbra::geometry {
 namespace {

@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
 #include <umbra/geometry/sample_ray.h>
+
+#include <gtest/gtest.h>
 
 namespace umbra::geometry {
 namespace {

@@ -2,12 +2,12 @@
 // the frame's visibility.<i> values, supersampling, the EXR round trip, and
 // the validator's 1e-6 rule.
 #include <tests/support/work_dir.h>
-
-#include <gtest/gtest.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

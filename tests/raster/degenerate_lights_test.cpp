@@ -5,10 +5,11 @@
 // refused ("shadow volume count -1"). The scenes are literal: the lights
 // are the midpoints of edges as doubles compute them, which puts them a
 // hair off the edge in exact arithmetic, so every sample has one answer.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>

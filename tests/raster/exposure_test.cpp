@@ -2,9 +2,10 @@
 // supersampling, the AOVs untouched, 0 EV bit-identical to no exposure, and
 // photometric intensities (Blender's 1000 W lamp as 54,351 cd) brought into
 // view by -14 EV.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/render.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -6,13 +6,14 @@
 // footprint's within the raster's error, bounded here from the outlines of
 // the receiver and of its lit regions (a texel can be counted wrongly only
 // where one of them crosses it).
-#include <gtest/gtest.h>
 #include <umbra/geometry/box.h>
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/sun/sun_light.h>
 #include <umbra/raster/methods/shadow_map.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>

@@ -1,10 +1,10 @@
 #include <tests/support/file_size_limit.h>
-
-#include <OpenImageIO/imageio.h>
-#include <gtest/gtest.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/shading.h>
 #include <umbra/util/input_error.h>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>

@@ -8,14 +8,14 @@
 #include <tests/support/many_light_scenes.h>
 #include <tests/support/rational_vec.h>
 #include <tests/support/scene_builders.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/raster/light_windows.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,10 @@
 // The memory estimates of raster/memory_estimate.h (issue 17, row 6) against
 // what was measured: ~12 bytes per light and pixel for the volume method,
 // so 2,000 lights at 1280x720 need about 23 GB.
-#include <gtest/gtest.h>
 #include <umbra/geometry/scene.h>
 #include <umbra/raster/memory_estimate.h>
+
+#include <gtest/gtest.h>
 
 namespace umbra::raster {
 namespace {

@@ -1,12 +1,13 @@
 // raster::render and raster::validate_render on scenes with known answers,
 // and the validator's ability to catch wrong pictures.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 

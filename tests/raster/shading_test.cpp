@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
 #include <umbra/raster/shading.h>
+
+#include <gtest/gtest.h>
 
 namespace umbra::raster {
 namespace {

@@ -1,8 +1,9 @@
 // SphereTable: which surfaces a limited light's sphere holds whole, misses or
 // cuts. Every answer other than `cut` skips the exact range predicate, so
 // each must be certain; the boundary cases must come out `cut`.
-#include <gtest/gtest.h>
 #include <umbra/raster/sphere_of_influence.h>
+
+#include <gtest/gtest.h>
 
 #include <vector>
 

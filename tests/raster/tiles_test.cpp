@@ -2,10 +2,11 @@
 // scanline's bands evenly and covers every row once, and a render of some
 // rows gives those rows exactly as the whole render does, whatever the
 // method, and leaves the others as background.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/frame.h>
 #include <umbra/raster/render.h>
+
+#include <gtest/gtest.h>
 
 #include <cstring>
 #include <string>

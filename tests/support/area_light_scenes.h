@@ -3,13 +3,13 @@
 // and visible_fraction_properties_test.cpp): a floor y = 0, squares, area
 // lights, and sample rays that meet the floor at t = 1 exactly.
 #include <tests/support/polygon_model.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/visible_surface.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/geometry/scene.h>
+
+#include <gtest/gtest.h>
 
 #include <utility>
 #include <vector>

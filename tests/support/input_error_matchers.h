@@ -1,7 +1,8 @@
 #pragma once
 // What the bad-input tests ask of a thrown InputError.
-#include <gtest/gtest.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <string>
 

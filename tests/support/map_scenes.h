@@ -3,7 +3,6 @@
 // on it, lights, map render options, scoring against the oracle, and where
 // the oracle's shadow edges lie.
 #include <tests/support/scene_builders.h>
-
 #include <umbra/geometry/scene.h>
 #include <umbra/raster/frame.h>
 #include <umbra/raster/render.h>

@@ -1,9 +1,10 @@
 #pragma once
 // Exact rational 3-vectors (CGAL::Exact_rational) for the brute-force
 // references of the geometry tests: every double is taken as its exact value.
-#include <CGAL/Exact_rational.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/vec3.h>
+
+#include <CGAL/Exact_rational.h>
 
 namespace umbra::geometry::test {
 

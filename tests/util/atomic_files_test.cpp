@@ -4,10 +4,10 @@
 // behind, and a previous file at the target stays as it was.
 #include <tests/support/file_size_limit.h>
 #include <tests/support/work_dir.h>
-
-#include <gtest/gtest.h>
 #include <umbra/util/atomic_files.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>

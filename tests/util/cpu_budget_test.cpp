@@ -2,10 +2,10 @@
 // mask and the cgroup CPU quota, read here from fake /proc texts and a fake
 // cgroup tree, and from the real process under sched_setaffinity.
 #include <tests/support/work_dir.h>
+#include <umbra/util/cpu_budget.h>
 
 #include <gtest/gtest.h>
 #include <sched.h>
-#include <umbra/util/cpu_budget.h>
 
 #include <filesystem>
 #include <fstream>

@@ -1,9 +1,10 @@
 // The per-pixel buffers' allocator (util/huge_pages.h): large blocks are
 // mapped apart on 2 MiB boundaries, small ones come from std::allocator, and
 // both hold what is written to them through every container operation.
-#include <gtest/gtest.h>
 #include <umbra/util/huge_pages.h>
 #include <umbra/util/uninitialized.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>

@@ -4,13 +4,13 @@
 // out, a FIFO blocked forever, and an EIO ended in "internal error".
 #include <tests/support/input_error_matchers.h>
 #include <tests/support/work_dir.h>
-
-#include <gtest/gtest.h>
-#include <sys/stat.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,8 @@
 // parallel_for and parallel_for_blocks: every item exactly once on any
 // thread count, and the first exception of a worker reaches the caller.
-#include <gtest/gtest.h>
 #include <umbra/util/parallel_for.h>
+
+#include <gtest/gtest.h>
 
 #include <atomic>
 #include <stdexcept>

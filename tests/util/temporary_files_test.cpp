@@ -5,10 +5,10 @@
 // re-raises it) and the temporary must be gone.
 #include <tests/support/child_process.h>
 #include <tests/support/work_dir.h>
+#include <umbra/util/temporary_files.h>
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
-#include <umbra/util/temporary_files.h>
 #include <unistd.h>
 
 #include <csignal>

@@ -5,12 +5,12 @@
 // refuses them, naming the field.
 #include <tests/geometry/io/gltf_fixture.h>
 #include <tests/support/input_error_matchers.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/coordinate_range.h>
 #include <umbra/geometry/io/gltf_scene.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <string>
 

@@ -2,9 +2,9 @@
 // degenerate input (coplanar, collinear, points at infinity, huge and tiny
 // coordinates). The reference below computes with CGAL::Exact_rational.
 #include <tests/support/rational_vec.h>
+#include <umbra/geometry/exact/predicates.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/exact/predicates.h>
 
 #include <random>
 

@@ -7,14 +7,14 @@
 // square [-2, 2]² (tests/geometry/footprint/footprint_test.cpp).
 #include <tests/support/openmesh_ply.h>
 #include <tests/support/polygon_model.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/footprint/footprint.h>
+#include <umbra/util/input_error.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
-#include <umbra/geometry/export/footprint_export.h>
-#include <umbra/geometry/footprint/footprint.h>
-#include <umbra/util/input_error.h>
 
 #include <algorithm>
 #include <bit>

@@ -5,14 +5,14 @@
 // formula in geodetic_frame_test.cpp and by GDAL in CTest
 // (footprint.geojson_read_back).
 #include <tests/support/polygon_model.h>
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/footprint_export.h>
 #include <umbra/geometry/export/footprint_geojson.h>
 #include <umbra/geometry/export/geodetic_frame.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <numbers>

@@ -5,14 +5,14 @@
 // receiver's front. And the triangulation itself on rings a fan would get
 // wrong.
 #include <tests/support/polygon_model.h>
+#include <umbra/geometry/export/footprint_export.h>
+#include <umbra/geometry/export/polygon_triangulation.h>
+#include <umbra/geometry/footprint/footprint.h>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
-#include <umbra/geometry/export/footprint_export.h>
-#include <umbra/geometry/export/polygon_triangulation.h>
-#include <umbra/geometry/footprint/footprint.h>
 #include <unistd.h>
 
 #include <algorithm>

@@ -3,8 +3,9 @@
 // fixed-point iteration in long double, and, as a sanity check on both,
 // the meridian and prime-vertical radii of curvature (Δφ ≈ s / M,
 // Δλ ≈ s / (N cos φ) for s metres north or east).
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/geodetic_frame.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>

@@ -2,14 +2,15 @@
 // does not share code with: assimp (Debian's libassimp: meshes, materials,
 // triangles, positions, node metadata) and tinygltf's raw accessors (the
 // per-vertex custom attributes, which assimp 5.2 drops).
-#include <assimp/Importer.hpp>
-#include <assimp/scene.h>
-#include <gtest/gtest.h>
-#include <tiny_gltf.h>
 #include <umbra/geometry/export/volume_export.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/util/input_error.h>
+
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include <cstring>
 #include <filesystem>

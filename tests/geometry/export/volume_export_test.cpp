@@ -3,12 +3,12 @@
 // umbra's exact readers, OpenMesh's PLY reader (custom properties) and the
 // JSON sidecar — and no file left behind by a failed write.
 #include <tests/support/openmesh_ply.h>
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/export/volume_export.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <bit>

@@ -6,16 +6,16 @@
 // tests/cli/volume_meshio_check.py reads the same files with meshio.
 #include <tests/support/openmesh_ply.h>
 #include <tests/support/work_dir.h>
-
-#include <assimp/Importer.hpp>
-#include <assimp/material.h>
-#include <assimp/scene.h>
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/volume_export.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/util/input_error.h>
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/scene.h>
+#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>

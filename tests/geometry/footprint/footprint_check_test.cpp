@@ -2,13 +2,13 @@
 // footprints pass it, written to PLY and read back; each kind of damage a
 // file can carry is caught and named.
 #include <tests/support/polygon_model.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/footprint_export.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/footprint/footprint_check.h>
 #include <umbra/geometry/io/footprint_reader.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>

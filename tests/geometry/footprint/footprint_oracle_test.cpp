@@ -3,11 +3,11 @@
 // and planes), lights on the same grid. The floor is the receiver and casts
 // nothing, so the oracle can be asked directly from points on it.
 #include <tests/support/plan_view.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/footprint_export.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 // Footprints on hand-built scenes whose regions follow from the geometry by
 // hand: exact vertices and areas. y is up; the floor is y = 0.
 #include <tests/support/polygon_model.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <set>

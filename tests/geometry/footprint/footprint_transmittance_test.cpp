@@ -6,12 +6,12 @@
 // shadows [-4/3, 4/3]² and the square [0, 2] × [-1, 1] at y = 2 shadows
 // [0, 4] × [-2, 2].
 #include <tests/support/polygon_model.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/footprint_export.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/footprint/footprint_check.h>
 #include <umbra/geometry/io/footprint_reader.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <map>

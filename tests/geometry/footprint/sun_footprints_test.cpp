@@ -2,8 +2,6 @@
 // step's footprint is compute_footprints' for the sun alone, and sun hours
 // agree at interior points with the exact oracle asked step by step.
 #include <tests/support/plan_view.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/footprint_export.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/footprint/footprint_check.h>
@@ -12,6 +10,8 @@
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/sun/sun_series.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,12 +3,12 @@
 // volumes), whose bounds and reach then leave the placeholder eye out.
 #include <tests/geometry/io/gltf_fixture.h>
 #include <tests/support/input_error_matchers.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/box.h>
 #include <umbra/geometry/io/gltf_scene.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/volumes/far_ends.h>
+
+#include <gtest/gtest.h>
 
 #include <string>
 

@@ -3,9 +3,9 @@
 // by their semantics, LoD choice, and surfaces with holes triangulated with
 // exactly the area of the outer ring minus the holes.
 #include <tests/support/rational_vec.h>
+#include <umbra/geometry/io/cityjson_reader.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/io/cityjson_reader.h>
 
 #include <string>
 #include <vector>

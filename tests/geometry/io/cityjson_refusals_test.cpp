@@ -1,9 +1,9 @@
 // Hostile CityJSON (geometry/io/cityjson_reader.h): every refusal is one
 // InputError naming the file and the JSON path inside it, never a crash.
 #include <tests/support/input_error_matchers.h>
+#include <umbra/geometry/io/cityjson_reader.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/io/cityjson_reader.h>
 
 #include <string>
 

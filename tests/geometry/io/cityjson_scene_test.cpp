@@ -3,9 +3,9 @@
 // scene file and the model field; and data/scenes/city/block.json.
 #include <tests/support/input_error_matchers.h>
 #include <tests/support/work_dir.h>
+#include <umbra/geometry/io/scene_json.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/io/scene_json.h>
 
 #include <algorithm>
 #include <filesystem>

@@ -7,12 +7,12 @@
 #include <tests/geometry/io/gltf_fixture.h>
 #include <tests/support/input_error_matchers.h>
 #include <tests/support/work_dir.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/gltf_json_checks.h>
 #include <umbra/geometry/io/gltf_scene.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>

@@ -2,12 +2,12 @@
 // small files the tests write themselves, and one InputError naming the file
 // and the glTF JSON path for each kind of malformed input.
 #include <tests/geometry/io/gltf_fixture.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/gltf_scene.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>

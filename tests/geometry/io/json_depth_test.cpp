@@ -1,6 +1,7 @@
 // json_nesting_depth: brackets counted outside strings only (issue 17, row 2).
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/json_depth.h>
+
+#include <gtest/gtest.h>
 
 #include <string>
 

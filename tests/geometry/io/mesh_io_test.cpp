@@ -3,10 +3,10 @@
 // Over 500 lines: one suite per format would repeat the shared fixtures;
 // the cases are short and each names the fault it pins.
 #include <tests/support/input_error_matchers.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>

@@ -3,11 +3,11 @@
 // and an OBJ face of 900k indices needed 3.4 GB, then exit 3. Every reader
 // now refuses a face of more than kMaxPolygonVertices before storing it.
 #include <tests/support/input_error_matchers.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>

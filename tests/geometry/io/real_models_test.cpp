@@ -4,12 +4,13 @@
 // throws anything else. Every mesh that loads gets shadow volumes for a
 // light above it and a directional light; on the small ones the volumes must
 // be closed weighted cycles (geometry/volumes/closure_check.h).
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/oracle/bvh.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/closure_check.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cctype>

@@ -1,10 +1,10 @@
 // The JSON scene loader: a full scene with exact values, and each bad input
 // reported with the file and the field path (or line and column).
 #include <tests/support/input_error_matchers.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>

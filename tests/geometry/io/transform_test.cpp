@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/transform.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>

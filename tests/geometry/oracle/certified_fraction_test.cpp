@@ -6,12 +6,12 @@
 // parallel blockers and lights whose vertices lie in occluders' planes.
 // y is up; the floor is y = 0.
 #include <tests/support/area_light_scenes.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/oracle/area_light_pieces.h>
 #include <umbra/geometry/oracle/covered_area_sweep.h>
 #include <umbra/geometry/oracle/pyramid_filter.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>

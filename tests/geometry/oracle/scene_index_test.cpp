@@ -4,12 +4,13 @@
 // through every mesh vertex, each light's class and shadowing polygons at
 // the hit, an area light's visible fraction) answered by a fresh index, whose first queries scan,
 // and by one whose tree is built, agree in every field.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
 #include <umbra/geometry/sample_ray.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>

@@ -1,7 +1,8 @@
 // The exact oracle on hand-built scenes whose answers follow from the
 // geometry by hand. y is up; the floor is y = 0.
-#include <gtest/gtest.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 

@@ -4,8 +4,9 @@
 // doubles and compared with ==. y is up; the floor is y = 0; the light is
 // at (0, 4, 0), so the segment from the floor point (0.5, 0, 0) to it
 // passes x = 0.375 at y = 1, 0.25 at y = 2 and 0.125 at y = 3.
-#include <gtest/gtest.h>
 #include <umbra/geometry/oracle/transmittance.h>
+
+#include <gtest/gtest.h>
 
 #include <stdexcept>
 

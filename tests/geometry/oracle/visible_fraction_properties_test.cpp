@@ -4,10 +4,10 @@
 // the samples DESIGN.md counts apart, on hand-built scenes. y is up; the
 // floor is y = 0.
 #include <tests/support/area_light_scenes.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,10 +5,10 @@
 // is y = 0. Every sample ray below meets the floor at t = 1 exactly, at the
 // intended point H; the sample point is P = H - ε·d.
 #include <tests/support/area_light_scenes.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

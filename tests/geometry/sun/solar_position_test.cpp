@@ -2,8 +2,9 @@
 // A5.1): 17 October 2003, 12:30:30 at UTC−7, 39.742476° N, 105.1786° W,
 // 1830.14 m, 820 mbar, 11 °C, ΔT = 67 s; and the sunrise, transit and
 // sunset times that report gives for the same day and place.
-#include <gtest/gtest.h>
 #include <umbra/geometry/sun/solar_position.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>

@@ -1,11 +1,12 @@
 // Sun lights (DESIGN.md "Site and sun", docs/sun.md): ISO 8601 times, the
 // site's frame, the scene file, and a winter-solstice noon shadow of a box
 // against its hand-worked length h / tan(elevation).
-#include <gtest/gtest.h>
 #include <umbra/geometry/footprint/footprint.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/sun/sun_light.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>

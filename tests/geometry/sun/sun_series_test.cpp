@@ -1,9 +1,10 @@
 // Series of suns (docs/sun.md "Time series"): ISO 8601 durations, the
 // instants START + k·STEP before END in START's offset, and what the
 // series writes for EnergyPlus.
-#include <gtest/gtest.h>
 #include <umbra/geometry/export/sun_series_export.h>
 #include <umbra/geometry/sun/sun_series.h>
+
+#include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>

@@ -1,9 +1,9 @@
 // Where volumes end (spheres of influence, scene reach) and what the
 // builder's statistics count.
 #include <tests/support/scene_builders.h>
+#include <umbra/geometry/volumes/builder.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/volumes/builder.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,9 +2,9 @@
 // parts together in light order: the result must be the one-thread result
 // to the bit, twisted groups renumbered as one pass over the lights would.
 #include <tests/support/many_light_scenes.h>
+#include <umbra/geometry/volumes/builder.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/volumes/builder.h>
 
 #include <bit>
 #include <cstdint>

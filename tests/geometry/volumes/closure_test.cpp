@@ -6,9 +6,6 @@
 //   shadowing X (the oracle's answer), whichever start point is chosen;
 // - the eye's starting counts equal that same number at the eye.
 #include <tests/support/scene_builders.h>
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/export/volume_export.h>
 #include <umbra/geometry/io/mesh_io.h>
@@ -18,6 +15,9 @@
 #include <umbra/geometry/volumes/eye_start.h>
 #include <umbra/geometry/volumes/far_ends.h>
 #include <umbra/geometry/volumes/model_reach.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <bit>
 #include <cmath>

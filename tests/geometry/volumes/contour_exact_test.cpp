@@ -3,9 +3,9 @@
 // placed where decisions degenerate (on a vertex, on an edge's line, in a
 // face's plane, between vertices), at scales from 1e-6 to 1e6.
 #include <tests/support/rational_vec.h>
+#include <umbra/geometry/volumes/contour.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/volumes/contour.h>
 
 #include <map>
 #include <random>

@@ -1,7 +1,7 @@
 #include <tests/support/scene_builders.h>
+#include <umbra/geometry/volumes/contour.h>
 
 #include <gtest/gtest.h>
-#include <umbra/geometry/volumes/contour.h>
 
 #include <algorithm>
 #include <map>

@@ -1,12 +1,12 @@
 // eye_start asks each light on its own thread: the counts, In_Shadow_Start
 // flags and degenerate lights must be those of one thread.
 #include <tests/support/many_light_scenes.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/eye_start.h>
+
+#include <gtest/gtest.h>
 
 #include <random>
 

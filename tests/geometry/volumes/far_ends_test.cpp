@@ -1,9 +1,10 @@
 // Where side polygons may end when the volume has no caps
 // (far_edge_leaving_box): just past one face of the scene's box, through
 // which both of the edge's rays leave, and nowhere that could come back in.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/mesh_io.h>
 #include <umbra/geometry/volumes/far_ends.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>

@@ -1,7 +1,8 @@
 // model_edges: distinct edges by position, in first-listed order, with every
 // polygon's use of each and its direction.
-#include <gtest/gtest.h>
 #include <umbra/geometry/volumes/model_edges.h>
+
+#include <gtest/gtest.h>
 
 #include <tuple>
 #include <vector>

@@ -2,10 +2,10 @@
 // exact directions they are built from (geometry/exact/constructions.h),
 // checked against exact rational arithmetic where doubles cancel to noise.
 #include <tests/support/rational_vec.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/constructions.h>
 #include <umbra/geometry/volumes/sphere_ends.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>

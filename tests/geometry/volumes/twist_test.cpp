@@ -8,10 +8,10 @@
 //  - facing: rays from L through many sample points, each intersected with
 //    every fan triangle by Cramer's rule, counting signed hits.
 #include <tests/support/rational_vec.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/volumes/twist.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>

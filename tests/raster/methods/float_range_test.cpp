@@ -2,11 +2,12 @@
 // row 3 and "Also"): before, --method map on a model scaled by 1e104
 // crashed (a NaN texel coordinate), and --method ray at 1e150 gave ~2,000
 // wrong samples of ~3,000 with exit 0.
-#include <gtest/gtest.h>
 #include <umbra/geometry/scene.h>
 #include <umbra/raster/methods/float_range.h>
 #include <umbra/raster/render.h>
 #include <umbra/util/input_error.h>
+
+#include <gtest/gtest.h>
 
 #include <string>
 

@@ -4,10 +4,11 @@
 // tinted cube it finds T where the truth is T², under the stacked quads the
 // upper quad's T alone; and a tinted surface lit from behind (the light
 // through the glass itself) is an attached shadow to it, τ 0.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 

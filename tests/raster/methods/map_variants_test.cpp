@@ -5,8 +5,6 @@
 // keeps highlights inside them.
 #include <tests/support/map_scenes.h>
 #include <tests/support/scene_builders.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/exact/visible_surface.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
@@ -14,6 +12,8 @@
 #include <umbra/raster/methods/shadow_map.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <stdexcept>

@@ -4,13 +4,13 @@
 // falls monotonically and widens with the light; and the map method renders
 // area lights with it, scored against the exact fraction.
 #include <tests/support/scene_builders.h>
-
-#include <gtest/gtest.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/methods/shadow_lookup.h>
 #include <umbra/raster/methods/shadow_map.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>

@@ -3,8 +3,9 @@
 // exactly 0 or 1 well inside the umbra or the lit region the rays must say
 // so exactly; in the penumbra the error must fall as N grows; and a render
 // must be the same bytes every time and whatever the thread count.
-#include <gtest/gtest.h>
 #include <umbra/raster/render.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,11 @@
 // Method::ray (Embree, single precision) against the exact oracle: how close
 // it comes on the data scenes, and the direction of the errors its epsilon
 // makes (docs/ray-cast.md).
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>

@@ -1,10 +1,11 @@
 // Coloured shadows with Embree (Method::ray, raster/methods/ray_transmittance.h):
 // the occlusion filter multiplies the tinted polygons' T along the ray and
 // counts a polygon once where Embree reports two of its fan triangles.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 

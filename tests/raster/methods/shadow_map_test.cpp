@@ -5,13 +5,13 @@
 // depend on the thread count.
 #include <tests/support/map_scenes.h>
 #include <tests/support/scene_builders.h>
-
-#include <gtest/gtest.h>
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/raster/methods/shadow_lookup.h>
 #include <umbra/raster/methods/shadow_map.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>

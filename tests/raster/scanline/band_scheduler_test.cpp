@@ -1,8 +1,9 @@
 // Which band each scanline worker renders next (raster/scanline/band_scheduler.h):
 // every band exactly once, runs walked downwards, the largest run split
 // when a worker runs out.
-#include <gtest/gtest.h>
 #include <umbra/raster/scanline/band_scheduler.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <thread>

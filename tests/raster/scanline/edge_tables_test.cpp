@@ -2,9 +2,10 @@
 // floor lies below the depth less its error bound at every pixel centre,
 // and the box's error is at least the first bound shade_shadow tries there:
 // the band skip and the per-pixel short cut rest on these two.
-#include <gtest/gtest.h>
 #include <umbra/raster/scanline/edge_tables.h>
 #include <umbra/raster/scanline/projected_polygon.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,13 +2,14 @@
 // every visible point round it in a band of rows is not scanned there) only
 // saves work: with it on or off, every visible id, depth, count, uncertain
 // flag (and light mask) and span is the same, on scenes with real shadow volumes.
-#include <gtest/gtest.h>
 #include <umbra/geometry/io/scene_json.h>
 #include <umbra/geometry/oracle/scene_index.h>
 #include <umbra/geometry/volumes/builder.h>
 #include <umbra/geometry/volumes/eye_start.h>
 #include <umbra/raster/scanline/scanline.h>
 #include <umbra/raster/scanline/surface_table.h>
+
+#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>

@@ -2,8 +2,9 @@
 // visible surfaces, counts and uncertainty flags against exact answers.
 // Over 500 lines: each case builds its polygons inline, literal
 // coordinates being the point of a regression test.
-#include <gtest/gtest.h>
 #include <umbra/raster/scanline/scanline.h>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
