@@ -58,5 +58,8 @@ function(umbra_library_interface target)
   # bounds, error bounds proved for separate roundings) is proved for
   # uncontracted arithmetic, so a consumer compiles it that way too.
   target_compile_options(${target} PUBLIC -ffp-contract=off)
-  target_link_libraries(${target} PUBLIC $<BUILD_INTERFACE:umbra::options>)
+  # Private: a project that adds umbra with add_subdirectory gets neither
+  # our warnings nor our source root on its include path. umbra's own
+  # programs, tests and benchmarks link umbra::options themselves.
+  target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:umbra::options>)
 endfunction()

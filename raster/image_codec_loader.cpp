@@ -1,10 +1,15 @@
 // Loads the OpenImageIO module (image_codec.h) on first use. It is looked for
-// beside the library that holds this file (the executable, umbra::raster
-// being static), in ../lib/umbra from there (an installed tree), and where
-// the build put it (UMBRA_IMAGE_CODEC_BUILD_PATH). Never unloaded: OpenImageIO
-// keeps threads and caches that outlive any point where dlclose would be safe.
-#include <dlfcn.h>
+// beside the file that holds this code (an executable or the Python module
+// linking umbra::raster statically, or the installed libumbra_raster.so), in
+// umbra/ there (the installed library's lib/umbra), in ../<libdir>/umbra
+// from there (an installed program in bin/), and where the build put it
+// (UMBRA_IMAGE_CODEC_BUILD_PATH). The installed places come first, relative
+// to the file, so an installed tree works wherever it is moved. Never
+// unloaded: OpenImageIO keeps threads and caches that outlive any point
+// where dlclose would be safe.
 #include <umbra/raster/image_codec.h>
+
+#include <dlfcn.h>
 
 #include <filesystem>
 #include <mutex>
@@ -25,7 +30,9 @@ std::vector<std::filesystem::path> candidates() {
     const std::filesystem::path here = std::filesystem::canonical(self.dli_fname, ec);
     if (!ec) {
       paths.push_back(here.parent_path() / kModuleName);
-      paths.push_back(here.parent_path().parent_path() / "lib" / "umbra" / kModuleName);
+      paths.push_back(here.parent_path() / "umbra" / kModuleName);
+      paths.push_back(here.parent_path().parent_path() / UMBRA_INSTALL_LIBDIR / "umbra" /
+                      kModuleName);
     }
   }
 #ifdef UMBRA_IMAGE_CODEC_BUILD_PATH
@@ -54,10 +61,11 @@ const Functions* load() {
     }
     return functions;
   }
-  throw std::runtime_error(
-      std::string("cannot load umbra's image module ") + kModuleName +
-      " (OpenImageIO), needed to read or write images: " +
-      (tried.empty() ? "not found beside the executable or in ../lib/umbra" : tried));
+  throw std::runtime_error(std::string("cannot load umbra's image module ") + kModuleName +
+                           " (OpenImageIO), needed to read or write images: " +
+                           (tried.empty() ? "not found beside the program or library, in umbra/ "
+                                            "there, or in ../" UMBRA_INSTALL_LIBDIR "/umbra"
+                                          : tried));
 }
 
 }  // namespace

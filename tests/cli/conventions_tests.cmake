@@ -156,3 +156,14 @@ if(UMBRA_HELP2MAN)
       grep -q 'umbra-batch(1)' $d/umbra-merge.1
       test $(ls $d/*.1 | wc -l) -eq 9")
 endif()
+
+# The installed C++ package: staged, moved, consumed by CMake and pkg-config
+# (tests/consumer, docs/api.md). Not in sanitizer builds, which install
+# nothing.
+if(UMBRA_INSTALLABLE)
+  add_test(NAME package.installed
+    COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${CMAKE_BINARY_DIR} -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
+      -DWORK=${CMAKE_CURRENT_BINARY_DIR}/package -DSCENE=${PROJECT_SOURCE_DIR}/data/scenes/default.json
+      -DUMBRA=$<TARGET_FILE:umbra> -DCXX=${CMAKE_CXX_COMPILER}
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/installed_package.cmake)
+endif()

@@ -18,6 +18,9 @@ the project; the libraries' headers by their installed names,
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
   alone, pybind11 by python/ alone.
+- cmake/internal-headers.txt lists exactly the libraries' headers that reach
+  a private dependency (CGAL, GMP, OpenMesh, fmt, ...): those are not
+  installed, every other header is (cmake/umbra_install.cmake).
 Usage: check_includes.py SOURCE_DIR   (exit 0 clean, 1 with the violations)
 """
 import pathlib
@@ -110,6 +113,23 @@ for folder in ("util", "geometry", "raster", "cli", "python"):
             for prefix, allowed in ONLY_IN:
                 if inc.startswith(prefix) and not rel.startswith(allowed):
                     violations.append(f"{prefix} only in {', '.join(allowed)}: {rel}")
+
+# Installed headers reach only the standard library, the system, TBB and
+# other installed headers.
+PRIVATE_DEPENDENCIES = ("CGAL/", "OpenMesh/", "embree3/", "glm/", "fmt/", "nlohmann/", "simdjson",
+                        "tiny_gltf", "proj", "gmp", "OpenImageIO/", "CLI/", "boost/", "pybind11/")
+reaching = set()
+for folder in LIBRARIES:
+    for src in sources(folder):
+        if src.suffix == ".h" and any(inc.startswith(PRIVATE_DEPENDENCIES) for inc in reach(src)):
+            reaching.add(str(src.relative_to(ROOT)))
+listed = {line.strip() for line in (ROOT / "cmake/internal-headers.txt").read_text().splitlines()
+          if line.strip() and not line.startswith("#")}
+for h in sorted(reaching - listed):
+    violations.append(f"{h} reaches a private dependency: list it in cmake/internal-headers.txt")
+for h in sorted(listed - reaching):
+    violations.append(f"cmake/internal-headers.txt lists {h}, which is "
+                      f"{'installable' if (ROOT / h).is_file() else 'not a file'}: remove it")
 
 for v in violations:
     print(v)
