@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <numbers>
 
 namespace umbra::cli {
 
@@ -36,8 +37,13 @@ std::string describe_light(const geometry::Light& light) {
   if (light.type == geometry::LightType::directional)
     return fmt::format("directional toward ({}, {}, {})", light.direction.x, light.direction.y,
                        light.direction.z);
-  std::string text =
-      fmt::format("point at ({}, {}, {})", light.position.x, light.position.y, light.position.z);
+  std::string text = fmt::format("{} at ({}, {}, {})", light.spot ? "spot" : "point",
+                                 light.position.x, light.position.y, light.position.z);
+  if (light.spot)
+    text += fmt::format(" toward ({}, {}, {}), cone {:g}-{:g} degrees", light.spot->axis.x,
+                        light.spot->axis.y, light.spot->axis.z,
+                        light.spot->inner_rad * 180 / std::numbers::pi,
+                        light.spot->outer_rad * 180 / std::numbers::pi);
   if (light.light_end) text += fmt::format(", light_end {}", *light.light_end);
   return text;
 }

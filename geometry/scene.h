@@ -59,6 +59,19 @@ struct SunInfo {
   bool below_horizon = false;
 };
 
+/// A spot light's cone (DESIGN.md "Spot lights", docs/spot-lights.md): a
+/// point light that reaches only the samples H with
+/// dot(H - L, axis) >= cos_outer·|H - L|·|axis| (the closed cone, decided
+/// exactly on the doubles below; equality is a boundary). Between the inner
+/// and the outer cone its light fades in shading only (glTF's falloff).
+struct SpotCone {
+  Vec3 axis;             ///< where the spot points: finite, non-zero, not normalized
+  double inner_rad = 0;  ///< 0 <= inner_rad <= outer_rad (JSON: <)
+  double outer_rad = 0.7853981633974483;  ///< <= pi/2 (glTF's default pi/4)
+  double cos_inner = 1;                   ///< std::cos(inner_rad), for shading only
+  double cos_outer = 0.7071067811865476;  ///< std::cos(outer_rad): THE number the range uses
+};  // made by make_spot_cone (spot_cone.h), which computes both cosines once
+
 /// Bergeron's light: full intensity up to dec_begin, then
 /// ((light_end - d) / (light_end - dec_begin))^decrease, zero from light_end on.
 /// A light without light_end is unlimited and never falls off.
@@ -81,6 +94,9 @@ struct Light {
   /// is the sun's there and then; the rest of the struct as for any
   /// directional light.
   std::optional<SunInfo> sun;
+  /// A spot light (`"type": "spot"`, glTF's spot): a point light (type
+  /// point, `position`, the same range fields) limited to this cone.
+  std::optional<SpotCone> spot;
   /// Gives no light at all (a sun below the horizon): every sample is out
   /// of range for it, it casts no volume and no footprint.
   bool dark = false;

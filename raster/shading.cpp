@@ -19,6 +19,20 @@ double light_falloff(const Light& light, double distance) {
   return std::pow((end - distance) / (end - light.dec_begin), light.decrease);
 }
 
+double spot_falloff(const Light& light, const Vec3& point) {
+  if (!light.spot) return 1.0;
+  const geometry::SpotCone& cone = *light.spot;
+  const Vec3 to_point = point - light.position;
+  const double lengths = length(to_point) * length(cone.axis);
+  if (!(lengths > 0)) return 1.0;  // the point is the light itself
+  const double cosine = dot(to_point, cone.axis) / lengths;
+  // glTF's recommended falloff (KHR_lights_punctual, "Inner and Outer Cone
+  // Angles"): linear in the cosine between the cones, then squared.
+  const double scale = 1.0 / std::max(1e-3, cone.cos_inner - cone.cos_outer);
+  const double t = std::clamp(cosine * scale - cone.cos_outer * scale, 0.0, 1.0);
+  return t * t;
+}
+
 Vec3 area_light_centre(const Light& light) {
   Vec3 sum{0, 0, 0};
   for (const Vec3& v : light.vertices) sum = sum + v;
@@ -43,6 +57,7 @@ void add_lights(const geometry::Scene& scene, const SurfaceLook& look, const Vec
     if (light.type == LightType::point) {
       to_light = light.position - point;
       factor *= light_falloff(light, length(to_light));
+      if (light.spot) factor *= spot_falloff(light, point);
     } else if (light.type == LightType::area) {
       to_light = area_light_centre(light) - point;
     } else {

@@ -13,6 +13,14 @@ namespace umbra::raster {
 /// light_end, 0 from light_end on. 1 for unlimited and directional lights.
 double light_falloff(const geometry::Light& light, double distance);
 
+/// A spot light's fade between its cones at `point` (glTF's recommended
+/// falloff, docs/spot-lights.md): with s = 1 / max(1e-3, cos(inner) -
+/// cos(outer)) and t = clamp(cosθ·s - cos(outer)·s, 0, 1), where θ is the
+/// angle between point - L and the axis, t². 1 inside the inner cone, 0
+/// outside the outer one (in doubles: shading only, the class is the exact
+/// range's), 1 at the light itself and for lights that are no spot.
+double spot_falloff(const geometry::Light& light, const geometry::Vec3& point);
+
 /// How a surface reflects: diffuse color and a Blinn-Phong highlight.
 struct SurfaceLook {
   geometry::Rgb color;
@@ -20,7 +28,8 @@ struct SurfaceLook {
   double shininess = 32;
 };
 
-/// Ambient·color + Σ over the lit lights of intensity · falloff ·
+/// Ambient·color + Σ over the lit lights of intensity · falloff (a spot's
+/// times spot_falloff) ·
 /// (color · max(0, n·l) + specular · max(0, n·h)^shininess where n·l > 0),
 /// h the half vector of l and the direction to the eye. `normal` is the unit
 /// normal facing the eye; `to_eye` the unit direction from the point to the

@@ -1,4 +1,4 @@
-#include <umbra/geometry/exact/predicates.h>
+#include <umbra/geometry/oracle/light_range.h>
 #include <umbra/raster/sphere_of_influence.h>
 
 #include <algorithm>
@@ -40,11 +40,7 @@ InSphere coverage(std::span<const geometry::Vec3> vertices, const geometry::Vec3
 
 bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
                   const geometry::HitTriangle& tri) {
-  if (light.dark) return true;  // a sun below the horizon reaches nothing
-  if (light.type != geometry::LightType::point || !light.light_end) return false;
-  return geometry::compare_hit_distance(ray.origin, ray.direction, tri.a, tri.b, tri.c,
-                                        light.position,
-                                        *light.light_end) == geometry::Sign::positive;
+  return geometry::hit_range(light, ray, tri) == geometry::InRange::outside;
 }
 
 SphereTable::SphereTable(std::span<const RasterPolygon> surfaces,
@@ -89,9 +85,13 @@ bool SphereTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geo
                                const geometry::SampleRay& ray,
                                const geometry::HitTriangle& tri) const {
   if (light.dark) return true;  // a sun below the horizon reaches nothing
-  if (light.type != geometry::LightType::point || !light.light_end) return false;  // no reach
-  const InSphere r = at(surface, l);
-  return r == InSphere::outside || (r == InSphere::cut && raster::out_of_range(light, ray, tri));
+  if (light.type != geometry::LightType::point) return false;  // no reach
+  // The sphere from the table; where it cuts the surface, and for a spot's
+  // cone, the one exact rule (geometry/oracle/light_range.h).
+  const InSphere r = light.light_end ? at(surface, l) : InSphere::inside;
+  if (r == InSphere::outside) return true;
+  if (r == InSphere::cut) return raster::out_of_range(light, ray, tri);
+  return geometry::hit_cone_range(light, ray, tri) == geometry::InRange::outside;
 }
 
 }  // namespace umbra::raster

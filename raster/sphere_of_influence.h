@@ -22,8 +22,10 @@
 namespace umbra::raster {
 
 /// Out of range decided exactly on the plane of the visible triangle `tri`
-/// (H is where `ray` meets it): |H - L| > light_end. Equality is a boundary,
-/// taken as in range; directional and unlimited lights are never out of range.
+/// (H is where `ray` meets it): |H - L| > light_end, or H outside a spot's
+/// closed cone, or a dark light (geometry::hit_range, the oracle's own
+/// rule). Equality is a boundary, taken as in range; directional and
+/// unlimited lights are never out of range.
 bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
                   const geometry::HitTriangle& tri);
 

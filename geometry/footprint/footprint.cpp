@@ -222,6 +222,12 @@ std::vector<std::uint32_t> chosen_lights(const Scene& scene, const FootprintOpti
           "footprint: light {} is an area light, whose shadow has penumbrae; footprints are "
           "built for point and directional lights only (choose them with --lights)",
           l));
+    if (scene.lights[l].spot)
+      throw std::invalid_argument(fmt::format(
+          "footprint: light {} is a spot, whose cone cuts receivers along conics, not polygons; "
+          "footprints are built for point and directional lights only (choose them with "
+          "--lights)",
+          l));
     if (scene.lights[l].light_end && !options.ignore_light_end)
       throw std::invalid_argument(fmt::format(
           "footprint: light {} has light_end, whose sphere cuts receivers along circles, not "

@@ -102,7 +102,8 @@ struct Footprints {
 };
 
 /// The footprints of `scene`. Throws std::invalid_argument with one line
-/// naming the light or the option for what footprints cannot do: a light
+/// naming the light or the option for what footprints cannot do: an area
+/// light, a spot (its cone cuts receivers along conics), a light
 /// with light_end (its sphere cuts receivers along circles, not polygons)
 /// unless ignore_light_end, a scene without lights, a light index out of
 /// range, an unknown receiver name or no receiver at all.

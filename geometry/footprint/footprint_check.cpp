@@ -395,6 +395,9 @@ FootprintCheckReport check_footprint(const Scene& input, const FootprintFile& fi
       continue;
     }
     const Light& light = input.lights[static_cast<std::size_t>(face.light)];
+    if (light.spot)
+      throw std::invalid_argument(fmt::format(
+          "validate --footprint: light {} is a spot, which footprints do not model", face.light));
     if (light.light_end && !options.ignore_light_end)
       throw std::invalid_argument(fmt::format(
           "validate --footprint: light {} has light_end, which footprints do not model (pass "

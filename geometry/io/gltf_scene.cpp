@@ -191,18 +191,24 @@ class SceneReader {
                                   "]; umbra needs each light once (its index is its AOV index)");
       placed_by[l] = static_cast<int>(node_index);
       Light& light = lights[l];
+      // A directional light and a spot shine down their node's local -Z.
+      const auto world_direction = [&] {
+        const Vec3 d = transform_direction(world, {0, 0, -1});
+        if (!is_finite(d) || d == Vec3{0, 0, 0})
+          fail(path, "the light's world direction is zero or not finite");
+        if (!normalizable_direction(d))
+          fail(path,
+               "the light's world direction cannot be normalized in doubles: its largest "
+               "component must be between 2^-500 and 2^500 in magnitude");
+        return d;
+      };
       if (light.type == LightType::point) {
         light.position = transform_point(world, {0, 0, 0});
         if (!within_coordinate_range(light.position))
           fail(path, "the light's world position is not finite or outside ±2^500 (~3.27e150)");
+        if (light.spot) light.spot->axis = world_direction();
       } else {
-        light.direction = transform_direction(world, {0, 0, -1});
-        if (!is_finite(light.direction) || light.direction == Vec3{0, 0, 0})
-          fail(path, "the light's world direction is zero or not finite");
-        if (!normalizable_direction(light.direction))
-          fail(path,
-               "the light's world direction cannot be normalized in doubles: its largest "
-               "component must be between 2^-500 and 2^500 in magnitude");
+        light.direction = world_direction();
       }
     });
     for (std::size_t l = 0; l < lights.size(); ++l)

@@ -15,6 +15,7 @@
 #include <umbra/geometry/io/transform.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
 #include <umbra/geometry/sample_ray.h>
+#include <umbra/geometry/spot_cone.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
 
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <string>
@@ -102,6 +104,26 @@ std::vector<Vec3> read_area_light_vertices(const Fields& in, Element v, const st
   return vertices;
 }
 
+/// A spot's direction and cone (DESIGN.md "Spot lights",
+/// docs/spot-lights.md): 0 <= inner_cone_deg < outer_cone_deg <= 90,
+/// defaults 0 and 45 (glTF's 0 and pi/4).
+SpotCone read_spot_cone(const Fields& in, Element v, const std::string& path) {
+  const Vec3 axis = in.direction(in.required(v, "direction", path), child(path, "direction"));
+  const auto angle = [&](const char* key, double fallback) {
+    const std::optional<Element> e = Fields::find(v, key);
+    return e ? in.number(*e, child(path, key)) : fallback;
+  };
+  const double inner = angle("inner_cone_deg", 0), outer = angle("outer_cone_deg", 45);
+  if (!(outer > 0 && outer <= kMaxSpotOuterDeg))
+    in.fail(child(path, "outer_cone_deg"),
+            fmt::format("must be in (0, 90] degrees, got {}", outer));
+  if (!(inner >= 0 && inner < outer))
+    in.fail(child(path, "inner_cone_deg"),
+            fmt::format("must be in [0, outer_cone_deg) = [0, {}) degrees, got {}", outer, inner));
+  constexpr double kRadiansPerDegree = std::numbers::pi / 180;
+  return make_spot_cone(axis, inner * kRadiansPerDegree, outer * kRadiansPerDegree);
+}
+
 Light read_light(const Fields& in, Element v, const std::string& path,
                  const std::optional<Site>& site) {
   in.expect_object(v, path);
@@ -112,6 +134,13 @@ Light read_light(const Fields& in, Element v, const std::string& path,
     light.type = LightType::point;
     in.check_keys(v, path, {"type", "position", "intensity", "dec_begin", "light_end", "decrease"});
     light.position = in.point(in.required(v, "position", path), child(path, "position"));
+  } else if (type == "spot") {
+    light.type = LightType::point;
+    in.check_keys(v, path,
+                  {"type", "position", "direction", "inner_cone_deg", "outer_cone_deg", "intensity",
+                   "dec_begin", "light_end", "decrease"});
+    light.position = in.point(in.required(v, "position", path), child(path, "position"));
+    light.spot = read_spot_cone(in, v, path);
   } else if (type == "directional") {
     light.type = LightType::directional;
     refuse_range(in, v, path, "a directional light");
@@ -125,7 +154,7 @@ Light read_light(const Fields& in, Element v, const std::string& path,
         read_area_light_vertices(in, in.required(v, "vertices", path), child(path, "vertices"));
   } else {
     in.fail(child(path, "type"),
-            "unknown light type '" + type + "'; expected point, directional, area or sun");
+            "unknown light type '" + type + "'; expected point, spot, directional, area or sun");
   }
   if (const std::optional<Element> intensity = Fields::find(v, "intensity"))
     light.intensity = in.rgb(*intensity, child(path, "intensity"));

@@ -16,7 +16,7 @@ struct SampleSegment {
   HPoint light;   ///< the light's homogeneous point
   bool out_of_range = false;
   /// A boundary whatever the polygons do: the hit's own (hit.boundary) or
-  /// |H - L| = light_end exactly.
+  /// |H - L| = light_end or H on a spot's cone, exactly.
   bool hard_boundary = false;
   /// The light lies in the plane of the shadow-casting hit polygon.
   bool light_in_hit_plane = false;

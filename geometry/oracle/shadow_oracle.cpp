@@ -1,6 +1,7 @@
 #include <umbra/geometry/exact/constructions.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/exact/segment_crossing.h>
+#include <umbra/geometry/oracle/light_range.h>
 #include <umbra/geometry/oracle/sample_segment.h>
 #include <umbra/geometry/oracle/shadow_oracle.h>
 
@@ -24,19 +25,13 @@ SampleSegment sample_segment(const SceneIndex& index, const SampleRay& ray, cons
                   .light = light_point(light),
                   .candidates = {}};
   s.hard_boundary = hit.boundary;
-  if (light.dark) {  // a sun below the horizon: no light reaches anything
+  // A dark light, light_end, a spot's cone: the one range rule (light_range.h).
+  const InRange range = hit_range(light, ray, h);
+  if (range == InRange::outside) {
     s.out_of_range = true;
     return s;
   }
-  if (light.type == LightType::point && light.light_end) {
-    const Sign range = compare_hit_distance(ray.origin, ray.direction, h.a, h.b, h.c,
-                                            light.position, *light.light_end);
-    if (range == Sign::positive) {
-      s.out_of_range = true;
-      return s;
-    }
-    if (range == Sign::zero) s.hard_boundary = true;
-  }
+  if (range == InRange::boundary) s.hard_boundary = true;
   const IndexedPolygon& hit_polygon = index.polygons()[hit.polygon];
   s.light_in_hit_plane =
       hit_polygon.casts_shadows &&

@@ -21,13 +21,14 @@ struct ShadowAnswer {
 
 /// The class of the sample point P = H - ε·d of `hit` (found by first_hit for
 /// `ray`) for light `light`:
-/// - out of range when the light has light_end and |H - L| > light_end;
+/// - out of range when the light has light_end and |H - L| > light_end, or
+///   is a spot and H lies outside its closed cone (light_range.h);
 /// - shadowed when some shadow-casting polygon's surface is crossed an odd
 ///   number of times by the segment from P to L (for a directional light,
 ///   the ray from P against its direction);
 /// - lit otherwise.
 /// Boundary when the answer could change under an arbitrarily small move:
-/// |H - L| = light_end, the segment touches a polygon edge or vertex or runs
+/// |H - L| = light_end, H on a spot's cone, the segment touches a polygon edge or vertex or runs
 /// in a face's plane, L lies in the plane of a shadow-casting hit polygon, or
 /// the hit itself is a boundary (hit.boundary); unless another polygon
 /// shadows P robustly, which no small move undoes.

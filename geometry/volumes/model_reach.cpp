@@ -1,4 +1,5 @@
 #include <umbra/geometry/exact/coordinate_range.h>
+#include <umbra/geometry/spot_cone.h>
 #include <umbra/geometry/volumes/far_ends.h>
 #include <umbra/geometry/volumes/model_reach.h>
 
@@ -62,8 +63,15 @@ void ModelReach::models(const Light& light, std::vector<std::uint32_t>& out) con
   out.clear();
   if (light.type != LightType::point || !light.light_end) {
     out = casting_;
-    return;
+  } else {
+    reached_models(light, out);
   }
+  // A spot: the models wholly outside its cone shadow nothing it reaches.
+  if (light.spot)
+    std::erase_if(out, [&](std::uint32_t m) { return box_outside_spot(light, boxes_[m]); });
+}
+
+void ModelReach::reached_models(const Light& light, std::vector<std::uint32_t>& out) const {
   const double reach = *light.light_end;
   const std::optional<Box> cube = reach_cube(light.position, reach);
   if (tree_.size() > 0 && cube) {
@@ -166,6 +174,7 @@ bool ModelReach::polygons(std::uint32_t model, const Light& light,
 }
 
 bool ModelReach::has_volume(std::uint32_t model, std::uint32_t polygon, const Light& light) const {
+  if (light.spot && box_outside_spot(light, boxes_[model])) return false;  // as models()
   if (light.type != LightType::point || !light.light_end) return true;
   const Parts& t = parts(model);
   return !box_beyond_reach(t.boxes[t.of_polygon[polygon]], light.position, *light.light_end);

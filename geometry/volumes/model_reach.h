@@ -39,7 +39,9 @@ class ModelReach {
   /// increasing order, replacing `out`: every casting model for a light
   /// without light_end; for a point light with one, every casting model
   /// but those whose box lies wholly beyond it (box_beyond_reach,
-  /// far_ends.h), which can shadow nothing in its range.
+  /// far_ends.h), which can shadow nothing in its range; for a spot, also
+  /// without those whose box lies wholly outside its cone
+  /// (box_outside_spot, spot_cone.h).
   void models(const Light& light, std::vector<std::uint32_t>& out) const;
 
   /// The polygons of casting model `model` in the parts of it not beyond
@@ -69,6 +71,8 @@ class ModelReach {
     Bvh tree;
   };
   const Parts& parts(std::uint32_t model) const;
+  /// models() for a point light with light_end: the sphere's rule alone.
+  void reached_models(const Light& light, std::vector<std::uint32_t>& out) const;
 
   const Scene& scene_;
   std::vector<Box> boxes_;  ///< per model; empty for a model that casts nothing

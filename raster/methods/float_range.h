@@ -15,7 +15,7 @@ namespace umbra::raster {
 /// The largest coordinate magnitude of a scene a float method renders.
 inline constexpr double kMaxFloatCoordinate = 0x1p60;  // ~1.15e18
 
-/// A directional light's direction must have a component of at least this
+/// A directional light's direction (a spot's axis) must have a component of at least this
 /// magnitude, so that its float square (2^-120) is still a normal float.
 inline constexpr double kMinFloatDirectionComponent = 0x1p-60;
 

@@ -1,6 +1,10 @@
+#include <umbra/geometry/spot_cone.h>
 #include <umbra/raster/shading.h>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
 
 namespace umbra::raster {
 namespace {
@@ -26,6 +30,26 @@ TEST(LightFalloff, UnlimitedAndDirectionalLightsNeverFade) {
   sun.type = geometry::LightType::directional;
   sun.light_end = 1;
   EXPECT_EQ(light_falloff(sun, 1e9), 1.0);
+}
+
+TEST(SpotFalloff, GltfsCurveBetweenTheCones) {
+  Light spot;
+  spot.position = {0, 0, 0};
+  spot.spot = geometry::make_spot_cone({0, -2, 0}, std::numbers::pi / 6, std::numbers::pi / 3);
+  const double cos_inner = std::cos(std::numbers::pi / 6),
+               cos_outer = std::cos(std::numbers::pi / 3);
+  EXPECT_EQ(spot_falloff(spot, {0, -5, 0}), 1.0);    // on the axis
+  EXPECT_EQ(spot_falloff(spot, {0, -1, 0.5}), 1.0);  // 26.6°: inside the inner cone
+  EXPECT_EQ(spot_falloff(spot, {0, -1, 2}), 0.0);    // 63.4°: outside the outer
+  EXPECT_EQ(spot_falloff(spot, {0, 0, 0}), 1.0);     // the light itself
+  // 45°: t = (cos 45° - cos 60°) / (cos 30° - cos 60°), squared.
+  const double t = (std::sqrt(0.5) - cos_outer) / (cos_inner - cos_outer);
+  EXPECT_NEAR(spot_falloff(spot, {0, -1, 1}), t * t, 1e-15);
+  // Inner = outer (a hard edge): the scale is capped at 1000, not infinite.
+  spot.spot = geometry::make_spot_cone({0, -1, 0}, 0.5, 0.5);
+  EXPECT_EQ(spot_falloff(spot, {0, -1, 0}), 1.0);
+  EXPECT_EQ(spot_falloff(spot, {0, -1, 1}), 0.0);
+  EXPECT_EQ(spot_falloff(Light{}, {0, -1, 1}), 1.0);  // no spot
 }
 
 TEST(Shade, AddsOnlyLitLights) {

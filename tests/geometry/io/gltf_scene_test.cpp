@@ -208,6 +208,30 @@ TEST(GltfIo, LightsKeepTheirArrayOrderWithColorTimesIntensityAndRangeAsLightEnd)
   EXPECT_EQ(s.lights[2].decrease, 1);
 }
 
+TEST(GltfIo, SpotPointsDownItsNodesMinusZWithGltfDefaults) {
+  GltfFixture g = lit_scene();
+  // Light 0 (placed by the node rotated 90° about x) becomes a spot.
+  g.doc["extensions"]["KHR_lights_punctual"]["lights"][0] = {
+      {"type", "spot"}, {"range", 9}, {"spot", nlohmann::json::object()}};
+  g.doc["extensions"]["KHR_lights_punctual"]["lights"][1] = {
+      {"type", "spot"}, {"spot", {{"outerConeAngle", 0.5}, {"innerConeAngle", 0.5}}}};
+  const Scene s = parse_gltf_scene(g.gltf(), "l.gltf");
+  ASSERT_TRUE(s.lights[0].spot.has_value());
+  EXPECT_EQ(s.lights[0].type, LightType::point);
+  EXPECT_EQ(s.lights[0].position, (Vec3{0, 0, 0}));
+  EXPECT_EQ(s.lights[0].spot->axis, (Vec3{0, 1, 0}));
+  EXPECT_EQ(s.lights[0].spot->inner_rad, 0.0);
+  EXPECT_EQ(s.lights[0].spot->outer_rad, std::numbers::pi / 4);
+  EXPECT_EQ(s.lights[0].spot->cos_outer, std::cos(std::numbers::pi / 4));
+  EXPECT_EQ(s.lights[0].light_end, 9.0);
+  // Inner = outer, as Blender writes a spot without blend: accepted.
+  ASSERT_TRUE(s.lights[1].spot.has_value());
+  EXPECT_EQ(s.lights[1].spot->axis, (Vec3{0, 0, -1}));
+  EXPECT_EQ(s.lights[1].spot->outer_rad, 0.5);
+  EXPECT_EQ(s.lights[1].spot->inner_rad, 0.5);
+  EXPECT_FALSE(s.lights[2].spot.has_value());
+}
+
 TEST(GltfIo, CameraFromNodeYfovAspectRatioAndExtras) {
   GltfFixture g = triangle_scene();
   g.doc["cameras"][0]["perspective"]["aspectRatio"] = 1.5;
@@ -367,14 +391,18 @@ TEST(GltfIoErrors, TrianglesCountNotAMultipleOfThree) {
             "triangles");
 }
 
-TEST(GltfIoErrors, SpotLightUnplacedLightAndLightPlacedTwice) {
+TEST(GltfIoErrors, SpotConeAnglesUnplacedLightAndLightPlacedTwice) {
   GltfFixture g = lit_scene();
   g.doc["extensions"]["KHR_lights_punctual"]["lights"][1] = {{"type", "spot"},
-                                                             {"spot", {{"outerConeAngle", 0.5}}}};
+                                                             {"spot", {{"outerConeAngle", 2.0}}}};
   EXPECT_EQ(error_of(g.gltf(), "l.gltf"),
-            "l.gltf: extensions.KHR_lights_punctual.lights[1].type: spot lights are not "
-            "supported (umbra's lights are point and directional; a spot's cone would change the "
-            "shadows)");
+            "l.gltf: extensions.KHR_lights_punctual.lights[1].spot.outerConeAngle: must be in "
+            "(0, pi/2] radians");
+  g.doc["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"] = {{"outerConeAngle", 0.5},
+                                                                     {"innerConeAngle", 0.6}};
+  EXPECT_EQ(error_of(g.gltf(), "l.gltf"),
+            "l.gltf: extensions.KHR_lights_punctual.lights[1].spot.innerConeAngle: must be in "
+            "[0, outerConeAngle] radians");
   g = lit_scene();
   g.doc["extensions"]["KHR_lights_punctual"]["lights"].push_back({{"type", "point"}});
   EXPECT_EQ(error_of(g.gltf(), "l.gltf"),

@@ -301,10 +301,10 @@ TEST(SceneIo, MeshErrorNamesFieldAndMeshLine) {
 }
 
 TEST(SceneIo, UnknownLightType) {
-  EXPECT_EQ(scene_error(scene(R"([{"type": "spot", "position": [0, 0, 0]}])")),
+  EXPECT_EQ(scene_error(scene(R"([{"type": "torch", "position": [0, 0, 0]}])")),
             kFile +
-                ": lights[0].type: unknown light type 'spot'; expected point, directional, area "
-                "or sun");
+                ": lights[0].type: unknown light type 'torch'; expected point, spot, directional, "
+                "area or sun");
   EXPECT_EQ(scene_error(scene(R"([{"position": [0, 0, 0]}])")),
             kFile + ": lights[0].type: missing required field 'type'");
 }
