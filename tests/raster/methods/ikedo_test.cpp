@@ -180,6 +180,43 @@ TEST(Ikedo, SoftSceneLitFarFromPenumbraeAndDarkInTheUmbraOnOtherObjects) {
   EXPECT_LE(report.lights[0].max_error, 1.0);
 }
 
+TEST(Ikedo, SameBytesOnOneAndThreeThreadsWithEitherFilter) {
+  // A box on a floor under a square light and a point light beside it (read
+  // through the id variant's buffer).
+  geometry::Scene scene;
+  scene.camera = {.eye = {0, 6, 6},
+                  .look_at = {0, 0, 0},
+                  .up = {0, 1, 0},
+                  .fov_y_deg = 40,
+                  .width = 64,
+                  .height = 48};
+  scene.models.push_back(test::box({-4, -0.5, -4}, {4, 0, 4}));
+  scene.models.push_back(test::box({-0.5, 0, -0.5}, {0.5, 1, 0.5}));
+  geometry::Light area;
+  area.type = geometry::LightType::area;
+  area.vertices = {{-0.5, 4, -0.5}, {-0.5, 4, 0.5}, {0.5, 4, 0.5}, {0.5, 4, -0.5}};
+  geometry::Light point;
+  point.position = {2, 3, 1};
+  scene.lights = {area, point};
+  for (const IkedoCorners corners : {IkedoCorners::two, IkedoCorners::four}) {
+    RenderOptions options{.method = Method::map, .threads = 1};
+    options.map.variant = MapVariant::ikedo;
+    options.map.resolution = 256;
+    options.map.ikedo_corners = corners;
+    const Frame one = render(scene, options);
+    options.threads = 3;
+    const Frame three = render(scene, options);
+    EXPECT_TRUE(one.beauty == three.beauty);
+    EXPECT_TRUE(one.shadow_planes() == three.shadow_planes());
+    // The point light's classes are the id variant's.
+    options.map.variant = MapVariant::polygon_id;
+    scene.lights = {point};
+    const Frame ids = render(scene, options);
+    scene.lights = {area, point};
+    for (std::size_t p = 0; p < ids.hit.size(); ++p) ASSERT_EQ(one.shadow(1, p), ids.shadow(0, p));
+  }
+}
+
 TEST(Ikedo, VariantRefusals) {
   geometry::Scene scene;
   scene.models.push_back(test::box({-1, 0, -1}, {1, 1, 1}));
