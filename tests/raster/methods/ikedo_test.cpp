@@ -183,18 +183,8 @@ TEST(Ikedo, SoftSceneLitFarFromPenumbraeAndDarkInTheUmbraOnOtherObjects) {
 TEST(Ikedo, SameBytesOnOneAndThreeThreadsWithEitherFilter) {
   // A box on a floor under a square light and a point light beside it (read
   // through the id variant's buffer).
-  geometry::Scene scene;
-  scene.camera = {.eye = {0, 6, 6},
-                  .look_at = {0, 0, 0},
-                  .up = {0, 1, 0},
-                  .fov_y_deg = 40,
-                  .width = 64,
-                  .height = 48};
-  scene.models.push_back(test::box({-4, -0.5, -4}, {4, 0, 4}));
-  scene.models.push_back(test::box({-0.5, 0, -0.5}, {0.5, 1, 0.5}));
-  geometry::Light area;
-  area.type = geometry::LightType::area;
-  area.vertices = {{-0.5, 4, -0.5}, {-0.5, 4, 0.5}, {0.5, 4, 0.5}, {0.5, 4, -0.5}};
+  geometry::Scene scene = test::box_under_square_light();
+  const geometry::Light area = scene.lights[0];
   geometry::Light point;
   point.position = {2, 3, 1};
   scene.lights = {area, point};
