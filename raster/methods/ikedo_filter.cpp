@@ -66,13 +66,21 @@ double iir_coefficient(double reach) {
   return 2 * b / (1 + b);
 }
 
-void iir_pass(ShadeBuffer& buffer, double a, bool right, bool down) {
-  const int n = buffer.size;
+namespace {
+
+/// Texels [i0, i1) x [j0, j1) of a buffer.
+struct Rect {
+  int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+};
+
+/// One pass over `r` only, its edges taken as the buffer's.
+void pass_over(ShadeBuffer& buffer, double a, bool right, bool down, const Rect& r) {
+  const int w = r.i1 - r.i0, h = r.j1 - r.j0;
   const int di = right ? 1 : -1, dj = down ? 1 : -1;
-  for (int jj = 0; jj < n; ++jj) {
-    const int j = down ? jj : n - 1 - jj;
-    for (int ii = 0; ii < n; ++ii) {
-      const int i = right ? ii : n - 1 - ii;
+  for (int jj = 0; jj < h; ++jj) {
+    const int j = down ? r.j0 + jj : r.j1 - 1 - jj;
+    for (int ii = 0; ii < w; ++ii) {
+      const int i = right ? r.i0 + ii : r.i1 - 1 - ii;
       const ShadeTexel x = buffer.at(i, j);
       const ShadeTexel& n1 = ii > 0 ? buffer.at(i - di, j) : x;
       const ShadeTexel& n2 = jj > 0 ? buffer.at(i, j - dj) : x;
@@ -81,12 +89,37 @@ void iir_pass(ShadeBuffer& buffer, double a, bool right, bool down) {
   }
 }
 
+}  // namespace
+
+void iir_pass(ShadeBuffer& buffer, double a, bool right, bool down) {
+  pass_over(buffer, a, right, down, {0, buffer.size, 0, buffer.size});
+}
+
 void iir_filter(ShadeBuffer& buffer, double a, IkedoCorners corners) {
-  iir_pass(buffer, a, true, true);
-  iir_pass(buffer, a, false, false);
+  // Only the box of the texels with an ID, widened by ln(1/1000) / ln(1/a)
+  // texels (103 for the reach of 32), more than twice as far as any tail
+  // was measured to reach (44: the cut ends it): outside it every texel
+  // stays empty, so the result is the whole buffer's (the same bytes on
+  // soft.json, soft_long_light.json and the bunny00 benchmark) at a
+  // fraction of the cost where a view is mostly empty.
+  Rect r{buffer.size, 0, buffer.size, 0};
+  for (int j = 0; j < buffer.size; ++j)
+    for (int i = 0; i < buffer.size; ++i)
+      if (buffer.at(i, j).id != kNoId) {
+        r.i0 = std::min(r.i0, i);
+        r.i1 = std::max(r.i1, i + 1);
+        r.j0 = std::min(r.j0, j);
+        r.j1 = std::max(r.j1, j + 1);
+      }
+  if (r.i0 >= r.i1) return;  // nothing to filter
+  const int grow = static_cast<int>(std::ceil(std::log(kCut) / std::log(a))) + 2;
+  r = {std::max(0, r.i0 - grow), std::min(buffer.size, r.i1 + grow), std::max(0, r.j0 - grow),
+       std::min(buffer.size, r.j1 + grow)};
+  pass_over(buffer, a, true, true, r);
+  pass_over(buffer, a, false, false, r);
   if (corners == IkedoCorners::four) {
-    iir_pass(buffer, a, false, true);
-    iir_pass(buffer, a, true, false);
+    pass_over(buffer, a, false, true, r);
+    pass_over(buffer, a, true, false, r);
   }
 }
 
