@@ -1,6 +1,7 @@
 #include "chart_run.h"
 
 #include <umbra/raster/image_io.h>
+#include <umbra/raster/methods/ikedo_functions.h>
 #include <umbra/raster/methods/map_variants.h>
 
 #include <fmt/format.h>
@@ -63,9 +64,26 @@ std::vector<Setting> chart_settings(bool quick, int max_map_resolution, bool are
       r.options.ray.area_samples = n;
       out.push_back(r);
     }
-    for (const int res : quick ? std::vector<int>{512} : std::vector<int>{512, 1024, 2048})
+    const std::vector<int> resolutions =
+        quick ? std::vector<int>{512} : std::vector<int>{512, 1024, 2048};
+    for (const int res : resolutions)
       if (res <= max_map_resolution)
         out.push_back(map_setting("map PCSS", res, 1, MapLookup::nearest, 1));
+    // Ikedo's penumbra with each of his coefficient sets (quick: set a).
+    using raster::IkedoCoefficients;
+    const std::vector<IkedoCoefficients> sets =
+        quick ? std::vector<IkedoCoefficients>{IkedoCoefficients::a}
+              : std::vector<IkedoCoefficients>{IkedoCoefficients::a, IkedoCoefficients::b,
+                                               IkedoCoefficients::c, IkedoCoefficients::d};
+    for (const IkedoCoefficients set : sets)
+      for (const int res : resolutions)
+        if (res <= max_map_resolution) {
+          Setting m =
+              map_setting(fmt::format("map Ikedo, set {}", raster::ikedo_coefficients_name(set)),
+                          res, 1, MapLookup::nearest, 1, MapVariant::ikedo);
+          m.options.map.ikedo_coefficients = set;
+          out.push_back(m);
+        }
     return out;
   }
   for (const double f : quick ? std::vector<double>{1} : std::vector<double>{0, 1, 100})
@@ -170,9 +188,11 @@ std::string setting_label(const Setting& setting) {
   if (setting.method == "map") {
     // The depth variant's labels as before the variants (docs' pictures
     // name them); the others say which they are.
-    const std::string variant = o.map.variant == raster::MapVariant::depth
-                                    ? ""
-                                    : std::string("-") + raster::map_variant_name(o.map);
+    std::string variant = o.map.variant == raster::MapVariant::depth
+                              ? ""
+                              : std::string("-") + raster::map_variant_name(o.map);
+    if (o.map.variant == raster::MapVariant::ikedo)
+      variant += std::string("-") + raster::ikedo_coefficients_name(o.map.ikedo_coefficients);
     return fmt::format("map-{}-{}-b{:g}-s{:g}-pcf{}{}", o.map.resolution,
                        o.map.lookup == raster::MapLookup::bilinear ? "bilinear" : "nearest",
                        o.map.constant_bias, o.map.slope_bias, o.map.pcf, variant);

@@ -50,6 +50,11 @@ void check_method_options(const RenderArgs& args) {
   if (args.map_variant && args.map_variant->starts_with("id") &&
       (args.map_bias || args.map_slope_bias))
     throw util::InputError("--map-bias", "does not apply to --map-variant id (no depth bias)");
+  const bool ikedo = args.map_variant == "ikedo";
+  if (ikedo && (args.map_bias || args.map_slope_bias))
+    throw util::InputError("--map-bias", "does not apply to --map-variant ikedo (no depth bias)");
+  if ((args.ikedo_coeffs || args.ikedo_filter) && !ikedo)
+    throw util::InputError("--ikedo-*", "applies to --method map --map-variant ikedo only");
   if (args.ray_epsilon && args.method != "ray")
     throw util::InputError("--ray-epsilon", "applies to --method ray only");
   if (args.area_samples && args.method != "ray")
@@ -68,14 +73,16 @@ std::string job_label(const geometry::Scene& scene, const RenderArgs& args) {
   for (const fs::path& input : scene.inputs) add(util::read_input_file(input, "scene input"));
   // Exposure and area samples only when given, so that labels of earlier
   // tiles still match.
-  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}{}{}", args.method,
+  add(fmt::format("method={} spp={} shadows={} map={},{},{},{},{},{} ray={}{}{}{}{}{}", args.method,
                   args.spp, !args.no_shadows, args.map_resolution.value_or(-1),
                   args.map_bias.value_or(-1), args.map_slope_bias.value_or(-1),
                   args.map_lookup.value_or(""), args.map_dither, args.map_pcf.value_or(-1),
                   args.ray_epsilon.value_or(-1),
                   args.exposure != 0 ? fmt::format(" exposure={}", args.exposure) : "",
                   args.area_samples ? fmt::format(" area_samples={}", *args.area_samples) : "",
-                  args.map_variant ? fmt::format(" map_variant={}", *args.map_variant) : ""));
+                  args.map_variant ? fmt::format(" map_variant={}", *args.map_variant) : "",
+                  args.ikedo_coeffs ? fmt::format(" ikedo_coeffs={}", *args.ikedo_coeffs) : "",
+                  args.ikedo_filter ? fmt::format(" ikedo_filter={}", *args.ikedo_filter) : ""));
   return fmt::format("{:016x}", hash);
 }
 
@@ -123,10 +130,19 @@ raster::ShadowMapOptions map_options(const RenderArgs& args) {
   if (args.map_variant) {
     const std::string& v = *args.map_variant;
     map.variant = v == "post"           ? raster::MapVariant::post_process
+                  : v == "ikedo"        ? raster::MapVariant::ikedo
                   : v.starts_with("id") ? raster::MapVariant::polygon_id
                                         : raster::MapVariant::depth;
     if (v == "id-polygon") map.id_granularity = raster::IdGranularity::polygon;
   }
+  if (args.ikedo_coeffs) {
+    const char c = (*args.ikedo_coeffs)[0];
+    map.ikedo_coefficients = c == 'b'   ? raster::IkedoCoefficients::b
+                             : c == 'c' ? raster::IkedoCoefficients::c
+                             : c == 'd' ? raster::IkedoCoefficients::d
+                                        : raster::IkedoCoefficients::a;
+  }
+  if (args.ikedo_filter == "bi") map.ikedo_corners = raster::IkedoCorners::two;
   return map;
 }
 
@@ -182,11 +198,25 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
       ->type_name("K");
   cmd->add_option("--map-variant", args.map_variant,
                   "depth (Williams), post (Williams' post-process: shadows darken the shaded "
-                  "image), id (Ikedo's ID buffer, an ID per object) or id-polygon (an ID per "
-                  "polygon) (map only; docs/shadow-maps.md)")
-      ->transform(CLI::IsMember({"depth", "post", "id", "id-polygon"}, CLI::ignore_case))
+                  "image), id (Ikedo's ID buffer, an ID per object), id-polygon (an ID per "
+                  "polygon) or ikedo (Ikedo's penumbra for area lights: filtered ID buffers, "
+                  "erosion and penumbra functions) (map only; docs/shadow-maps.md)")
+      ->transform(CLI::IsMember({"depth", "post", "id", "id-polygon", "ikedo"}, CLI::ignore_case))
       ->default_str("depth")
       ->type_name("VARIANT");
+  cmd->add_option("--ikedo-coeffs", args.ikedo_coeffs,
+                  "Ikedo's light-erosion coefficients (k0, k1, k2): a (3/2, 1, 1), b (7/6, 3, 3), "
+                  "c (21/20, 20, 20) or d (101/100, 50, 50) (--map-variant ikedo only; "
+                  "docs/soft-shadows.md)")
+      ->transform(CLI::IsMember({"a", "b", "c", "d"}, CLI::ignore_case))
+      ->default_str("a")
+      ->type_name("SET");
+  cmd->add_option("--ikedo-filter", args.ikedo_filter,
+                  "Ikedo's IIR filter from two corners (bi) or four (crossed) "
+                  "(--map-variant ikedo only)")
+      ->transform(CLI::IsMember({"bi", "crossed"}, CLI::ignore_case))
+      ->default_str("crossed")
+      ->type_name("KIND");
   cmd->add_option("--ray-epsilon", args.ray_epsilon,
                   "Shadow-ray start offset as a fraction of the scene's bounding-box diagonal "
                   "(ray only)")

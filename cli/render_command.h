@@ -29,7 +29,9 @@ struct RenderArgs {
   std::optional<std::string> map_lookup;  ///< "nearest" or "bilinear"
   bool map_dither = false;
   std::optional<int> map_pcf;
-  std::optional<std::string> map_variant;  ///< "depth", "post", "id" or "id-polygon"
+  std::optional<std::string> map_variant;   ///< "depth", "post", "id", "id-polygon" or "ikedo"
+  std::optional<std::string> ikedo_coeffs;  ///< "a" … "d" (--map-variant ikedo)
+  std::optional<std::string> ikedo_filter;  ///< "bi" or "crossed" (--map-variant ikedo)
   // --method ray (raster::RayOptions)
   std::optional<double> ray_epsilon;
   std::optional<int> area_samples;  ///< sample points per area light and visible sample

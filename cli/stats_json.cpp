@@ -1,5 +1,6 @@
 #include <cli/output_files.h>
 #include <cli/stats_json.h>
+#include <umbra/raster/methods/ikedo_functions.h>
 #include <umbra/raster/methods/map_variants.h>
 #include <umbra/util/cpu_budget.h>
 
@@ -73,6 +74,10 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
         {"pcf", m.pcf},
         {"variant", raster::map_variant_name(m)},
     };
+    if (m.variant == raster::MapVariant::ikedo) {
+      j["map"]["ikedo_coefficients"] = raster::ikedo_coefficients_name(m.ikedo_coefficients);
+      j["map"]["ikedo_filter"] = m.ikedo_corners == raster::IkedoCorners::two ? "bi" : "crossed";
+    }
   }
   return j;
 }

@@ -136,7 +136,11 @@ u64 estimate_render_bytes(const geometry::Scene& scene, const RenderOptions& opt
     // Ikedo's IDs beside them (4 bytes more a texel); with tinted models
     // the depth variant keeps his transparency buffer too (a depth and a
     // model a texel).
-    u64 texel_bytes = options.map.variant == MapVariant::polygon_id ? 8 : 4;
+    // Ikedo's penumbra: three depth layers (20 bytes a texel) and two
+    // filtered shade buffers (24) at once.
+    u64 texel_bytes = options.map.variant == MapVariant::ikedo        ? 44
+                      : options.map.variant == MapVariant::polygon_id ? 8
+                                                                      : 4;
     if (tinted_models > 0 && options.map.variant == MapVariant::depth) texel_bytes += 8;
     for (const geometry::Light& light : scene.lights) {
       const bool area = light.type == geometry::LightType::area;

@@ -27,8 +27,22 @@ enum class MapLookup { nearest, bilinear };
 ///     (its highlight scaled with it, not removed: his remark);
 ///   polygon_id: Ikedo's ID buffer, the map holding the ID (and depth) of
 ///     the nearest surface; lit where the ID at the lookup is the sample's
-///     own, else by the depth with no bias.
-enum class MapVariant { depth, post_process, polygon_id };
+///     own, else by the depth with no bias;
+///   ikedo: Ikedo's soft shadows for area lights: the ID buffer (per
+///     object) with the furthest depth of the nearest object and a second
+///     buffer for the second-nearest, both filtered by his bi-directional
+///     IIR filter, read through his light-erosion and penumbra functions
+///     (raster/methods/ikedo_*.h; docs/soft-shadows.md, "Ikedo's
+///     penumbra"). Point and directional lights: the polygon_id variant.
+enum class MapVariant { depth, post_process, polygon_id, ikedo };
+
+/// Ikedo's coefficient sets (k0, k1, k2) of his light-erosion function:
+/// a (3/2, 1, 1), b (7/6, 3, 3), c (21/20, 20, 20), d (101/100, 50, 50).
+enum class IkedoCoefficients { a, b, c, d };
+
+/// His IIR filter scans from two opposite corners of the buffer
+/// ("bi-directional") or from all four ("crossed bi-directional").
+enum class IkedoCorners { two, four };
 
 /// What one ID of Ikedo's buffer names: a model ("a code uniquely
 /// identifying every object", the paper's choice) or a single polygon.
@@ -52,7 +66,9 @@ struct ShadowMapOptions {
   /// is shadowed when less than half the filter sees the light.
   int pcf = 1;
   MapVariant variant = MapVariant::depth;
-  IdGranularity id_granularity = IdGranularity::object;  ///< polygon_id only
+  IdGranularity id_granularity = IdGranularity::object;         ///< polygon_id only
+  IkedoCoefficients ikedo_coefficients = IkedoCoefficients::a;  ///< ikedo only
+  IkedoCorners ikedo_corners = IkedoCorners::four;              ///< ikedo only
 };
 
 /// The most sample points RayOptions::area_samples may ask for (2^20).

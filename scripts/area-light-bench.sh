@@ -4,9 +4,9 @@
 # light of side a tenth of the model's size, horizontal, centred where the
 # benchmark's single point light is. Times the volume method (the
 # certified visible fraction), the hard frame of a point light at the
-# light's centre, Embree with N = 16, 64, 256, 1024 light samples and the
-# map method's PCSS; scores each against the exact V on 20,000 seeded
-# samples.
+# light's centre, Embree with N = 16, 64, 256, 1024 light samples, the
+# map method's PCSS and Ikedo's penumbra with each of his coefficient sets;
+# scores each against the exact V on 20,000 seeded samples.
 #
 #   scripts/area-light-bench.sh [OUT_DIR] [THREADS]
 #
@@ -52,7 +52,12 @@ PY
   done
   run "area light, map (PCSS)" "$umbra" render "$out/$model-area.json" --threads "$threads" -q \
     --method map -o "$out/$model-pcss.exr"
-  for image in volume ray16 ray64 ray256 ray1024 pcss; do
+  for set in a b c d; do
+    run "area light, map (Ikedo's penumbra, set $set)" "$umbra" render "$out/$model-area.json" \
+      --threads "$threads" -q --method map --map-variant ikedo --ikedo-coeffs "$set" \
+      -o "$out/$model-ikedo$set.exr"
+  done
+  for image in volume ray16 ray64 ray256 ray1024 pcss ikedoa ikedob ikedoc ikedod; do
     # Exit 1 is expected for the sampled methods: their penumbra errs.
     run "validate $image on 20000 samples (the exact V)" "$umbra" validate \
       "$out/$model-area.json" --image "$out/$model-$image.exr" --samples 20000 \

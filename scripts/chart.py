@@ -74,6 +74,8 @@ def scene_chart(name, rows, out):
         style = dict(STYLE[method])
         if method == "map" and pts[0].get("map_variant") not in (None, "", "depth"):
             style["linestyle"] = "--"  # the source papers' variants (issue 22)
+            if pts[0].get("map_variant") == "ikedo":
+                style["marker"] = "^"  # Ikedo's penumbra, one curve per coefficient set
         ax.plot(xs, ys, label=curve, linewidth=1.2, **style)
         if soft and method in ("ray", "map"):
             for p, y in zip(pts, ys):

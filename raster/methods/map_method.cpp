@@ -11,9 +11,11 @@
 // The variants (map_variants.h) change what is looked up and how: Williams'
 // post-process looks up the point rebuilt from the image's float depth and
 // darkens the pixel after shading; Ikedo's ID buffer stores and compares
-// surface IDs.
+// surface IDs; Ikedo's penumbra (area lights) filters two ID buffers and
+// reads them through his erosion and penumbra functions (ikedo_lookup.h).
 #include <umbra/geometry/box.h>
 #include <umbra/geometry/exact/predicates.h>
+#include <umbra/raster/methods/ikedo_lookup.h>
 #include <umbra/raster/methods/map_variants.h>
 #include <umbra/raster/methods/render_methods.h>
 #include <umbra/raster/methods/shadow_lookup.h>
@@ -132,7 +134,10 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   const geometry::Scene& scene = index.scene();
   check_map_variant(mo, scene);
   const bool post = mo.variant == MapVariant::post_process;
-  const bool ids = mo.variant == MapVariant::polygon_id;
+  const bool ikedo = mo.variant == MapVariant::ikedo;
+  // Ikedo's soft-shadow variant reads point and directional lights through
+  // his ID buffer.
+  const bool ids = mo.variant == MapVariant::polygon_id || ikedo;
   const geometry::CameraFrame camera = geometry::camera_frame(scene.camera);
   const RowRange rows = rows_to_render(options, camera.height);
   const std::size_t lights = scene.lights.size();
@@ -245,6 +250,12 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
   const double near = 1e-7 * std::max(index.magnitude(), 1e-300);
   std::vector<std::vector<MapView>> views(lights);
   std::vector<std::vector<DepthMap>> maps(lights);
+  // Ikedo's filtered buffers (area lights), his filter's coefficient and
+  // its edge profile inverted, the same for every view.
+  std::vector<std::vector<IkedoBuffers>> ikedo_maps(lights);
+  const double ikedo_a = iir_coefficient(kIkedoReach);
+  const EdgeDistances edge_table =
+      ikedo ? edge_distances(ikedo_a, mo.ikedo_corners, kIkedoReach) : EdgeDistances{};
   std::uint64_t views_to_build = 0;
   for (std::size_t l = 0; l < lights; ++l) views_to_build += std::popcount(needed[l].load());
   progress.phase("shadow maps", views_to_build);
@@ -259,8 +270,18 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
     }
     maps[l].resize(views[l].size());
     if (transparency) tint_maps[l].resize(views[l].size());
+    const bool filtered = ikedo && light.type == geometry::LightType::area;
+    if (filtered) ikedo_maps[l].resize(views[l].size());
     for (std::size_t f = 0; f < views[l].size(); ++f) {
       if (!(needed[l].load() >> f & 1u)) continue;
+      if (filtered) {
+        ikedo_maps[l][f] =
+            ikedo_buffers(views[l][f], occluders, options.threads, ikedo_a, mo.ikedo_corners);
+        ++stats.map_views;
+        stats.map_texels += ikedo_maps[l][f].nearest.texels.size();
+        progress.advance();
+        continue;
+      }
       maps[l][f] = rasterize_depth(views[l][f], occluders, options.threads, ids);
       ++stats.map_views;
       stats.map_texels += maps[l][f].depth.size();
@@ -304,12 +325,16 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
         // sample's construction).
         if (transparency) sample.tau[l] = {0, 0, 0};
         if (frame.is_soft(l)) {
-          // An area light: PCSS's estimate of V (1 where nothing was looked up).
+          // An area light: PCSS's or Ikedo's estimate of V (1 where nothing
+          // was looked up).
           double v = 1;
           if (decided[pixel * lights + l] == Decided::shadowed) v = 0;
           if (decided[pixel * lights + l] == Decided::lookup) {
             const int f = face[pixel * lights + l];
-            v = pcss_visibility(views[l][f], maps[l][f], receiver, radius[l], mo);
+            v = ikedo ? ikedo_visibility(
+                            views[l][f], ikedo_maps[l][f], receiver, own_id,
+                            {radius[l], erosion_coefficients(mo.ikedo_coefficients), &edge_table})
+                      : pcss_visibility(views[l][f], maps[l][f], receiver, radius[l], mo);
             ++row_lookups;
           }
           sample.visibility[l] = static_cast<float>(v);

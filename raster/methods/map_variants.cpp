@@ -1,5 +1,6 @@
 #include <umbra/raster/methods/map_variants.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,8 @@ const char* map_variant_name(const ShadowMapOptions& options) {
       return "post";
     case MapVariant::polygon_id:
       return options.id_granularity == IdGranularity::object ? "id" : "id-polygon";
+    case MapVariant::ikedo:
+      return "ikedo";
   }
   return "depth";
 }
@@ -21,12 +24,19 @@ std::optional<std::string> map_variant_refusal(const ShadowMapOptions& options,
                                                const geometry::Scene& scene) {
   if (options.variant == MapVariant::depth) return std::nullopt;
   const std::string name = map_variant_name(options);
-  for (const geometry::Light& light : scene.lights)
-    if (light.type == geometry::LightType::area)
-      return "map variant " + name +
-             " takes point and directional lights only; an area light's PCSS reads depths (use "
-             "the depth variant)";
-  if (options.variant == MapVariant::polygon_id &&
+  const bool area = std::any_of(scene.lights.begin(), scene.lights.end(), [](const auto& light) {
+    return light.type == geometry::LightType::area;
+  });
+  if (options.variant == MapVariant::ikedo) {
+    if (!area)
+      return "map variant ikedo estimates area lights' penumbrae and the scene has none (use "
+             "--map-variant id)";
+  } else if (area) {
+    return "map variant " + name +
+           " takes point and directional lights only; an area light's PCSS reads depths (use "
+           "the depth variant)";
+  }
+  if (options.variant != MapVariant::depth && options.variant != MapVariant::post_process &&
       (options.lookup != MapLookup::nearest || options.pcf != 1))
     return "map variant " + name + " reads one texel: bilinear lookup and PCF do not apply";
   return std::nullopt;

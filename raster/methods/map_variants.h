@@ -23,14 +23,15 @@
 namespace umbra::raster {
 
 /// The variant's name on the command line (--map-variant): "depth",
-/// "post", "id" (an ID per object) or "id-polygon".
+/// "post", "id" (an ID per object), "id-polygon" or "ikedo".
 const char* map_variant_name(const ShadowMapOptions& options);
 
 /// Why `options` cannot render `scene`, in one line, or nullopt: Ikedo's
 /// buffer is read at one texel and compared without bias (bilinear lookup
-/// and PCF do not apply), and neither variant estimates an area light's
-/// visible fraction (PCSS reads depths only). The CLI reports it as bad
-/// input before rendering.
+/// and PCF do not apply), the post and id variants do not estimate an area
+/// light's visible fraction (PCSS reads depths only), and the ikedo
+/// variant exists for area lights (a scene without one is refused). The
+/// CLI reports it as bad input before rendering.
 std::optional<std::string> map_variant_refusal(const ShadowMapOptions& options,
                                                const geometry::Scene& scene);
 

@@ -73,9 +73,16 @@ std::optional<Projected> project_occluder(const MapView& view, const Occluder& o
   return out;
 }
 
-/// Fills rows [j0, j1) of `map` with `o`'s depth where it is nearer.
+/// What a texel keeps of the occluders covering it (Ikedo's buffers beside
+/// the nearest depth: rasterize_layer).
+enum class Keep : std::uint8_t { nearest, furthest_of_nearest, second_nearest };
+
+/// Fills rows [j0, j1) of `map` with `o`'s depth where it is nearer (Keep::
+/// nearest); or, given the nearest layer `first`, where `o` is the texel's
+/// nearest object and farther, or is another object and nearer.
+template <Keep keep>
 void fill_rows(const MapView& view, const Projected& o, int j0, int j1, std::vector<double>& xs,
-               DepthMap& map) {
+               DepthMap& map, const DepthMap* first = nullptr) {
   const int n = static_cast<int>(o.u.size());
   const double s0 = view.origin_s(), texel = view.texel();
   for (int j = std::max(j0, o.row0); j < std::min(j1, o.row1); ++j) {
@@ -108,11 +115,22 @@ void fill_rows(const MapView& view, const Projected& o, int j0, int j1, std::vec
                                           : (o.c - o.normal.x * s - o.normal.y * t) / o.normal.z;
         const float depth =
             static_cast<float>(std::isnan(z) ? o.zmin : std::clamp(z, o.zmin, o.zmax));
-        if (!ids) {
-          row[i] = std::min(row[i], depth);
-        } else if (depth < row[i] || (depth == row[i] && o.id < ids[i])) {
-          row[i] = depth;
-          ids[i] = o.id;
+        if constexpr (keep == Keep::nearest) {
+          if (!ids) {
+            row[i] = std::min(row[i], depth);
+          } else if (depth < row[i] || (depth == row[i] && o.id < ids[i])) {
+            row[i] = depth;
+            ids[i] = o.id;
+          }
+        } else {
+          const std::uint32_t nearest = first->id_at(i, j);
+          if (keep == Keep::furthest_of_nearest && o.id == nearest) {
+            row[i] = std::max(row[i], depth);
+          } else if (keep == Keep::second_nearest && o.id != nearest &&
+                     (depth < row[i] || (depth == row[i] && o.id < ids[i]))) {
+            row[i] = depth;
+            ids[i] = o.id;
+          }
         }
       }
     }
@@ -192,23 +210,60 @@ MapView directional_view(const Vec3& direction, const geometry::Box& bounds, int
   return v;
 }
 
+namespace {
+
+/// Projects every occluder into `view`, then calls fill(p, j0, j1, xs) for
+/// each that may cover a band of kBandRows rows, bands on up to `threads`
+/// threads.
+template <class Fill>
+void fill_bands(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
+                int size, Fill&& fill) {
+  std::vector<Projected> projected;
+  projected.reserve(occluders.size());
+  for (const Occluder& o : occluders)
+    if (std::optional<Projected> p = project_occluder(view, o)) projected.push_back(std::move(*p));
+  const int bands = (size + kBandRows - 1) / kBandRows;
+  util::parallel_for(bands, threads, [&](int band) {
+    const int j0 = band * kBandRows, j1 = std::min(size, j0 + kBandRows);
+    std::vector<double> xs;
+    for (const Projected& p : projected)
+      if (p.row0 < j1 && p.row1 > j0) fill(p, j0, j1, xs);
+  });
+}
+
+}  // namespace
+
 DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
                          bool with_ids) {
   DepthMap map;
   map.size = view.size();
   map.depth.assign(static_cast<std::size_t>(map.size) * map.size, kNoOccluder);
   if (with_ids) map.id.assign(map.depth.size(), kNoId);
-  std::vector<Projected> projected;
-  projected.reserve(occluders.size());
-  for (const Occluder& o : occluders)
-    if (std::optional<Projected> p = project_occluder(view, o)) projected.push_back(std::move(*p));
-  const int bands = (map.size + kBandRows - 1) / kBandRows;
-  util::parallel_for(bands, threads, [&](int band) {
-    const int j0 = band * kBandRows, j1 = std::min(map.size, j0 + kBandRows);
-    std::vector<double> xs;
-    for (const Projected& p : projected)
-      if (p.row0 < j1 && p.row1 > j0) fill_rows(view, p, j0, j1, xs, map);
-  });
+  fill_bands(view, occluders, threads, map.size,
+             [&](const Projected& p, int j0, int j1, std::vector<double>& xs) {
+               fill_rows<Keep::nearest>(view, p, j0, j1, xs, map);
+             });
+  return map;
+}
+
+DepthMap rasterize_layer(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
+                         DepthLayer layer, const DepthMap& nearest) {
+  DepthMap map;
+  map.size = view.size();
+  const bool furthest = layer == DepthLayer::furthest_of_nearest;
+  if (furthest) {
+    map.depth = nearest.depth;  // the furthest is at least the nearest
+  } else {
+    map.depth.assign(static_cast<std::size_t>(map.size) * map.size, kNoOccluder);
+    map.id.assign(map.depth.size(), kNoId);
+  }
+  fill_bands(view, occluders, threads, map.size,
+             [&](const Projected& p, int j0, int j1, std::vector<double>& xs) {
+               if (furthest)
+                 fill_rows<Keep::furthest_of_nearest>(view, p, j0, j1, xs, map, &nearest);
+               else
+                 fill_rows<Keep::second_nearest>(view, p, j0, j1, xs, map, &nearest);
+             });
   return map;
 }
 

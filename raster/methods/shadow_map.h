@@ -104,4 +104,16 @@ inline constexpr std::uint32_t kNoId = std::numeric_limits<std::uint32_t>::max()
 DepthMap rasterize_depth(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
                          bool with_ids = false);
 
+/// Ikedo's buffers beside the nearest layer (his soft shadows):
+///   furthest_of_nearest: per texel the largest depth of the occluders that
+///     carry the nearest layer's ID there ("the furthest depth of the
+///     nearest object, collating the polygon IDs"); no IDs of its own;
+///   second_nearest: the nearest depth and ID among the occluders whose ID
+///     differs from the nearest layer's there (his second shadow buffer).
+/// `nearest` is rasterize_depth(view, occluders, threads, true). Order-free
+/// as rasterize_depth is.
+enum class DepthLayer : std::uint8_t { furthest_of_nearest, second_nearest };
+DepthMap rasterize_layer(const MapView& view, std::span<const Occluder> occluders, unsigned threads,
+                         DepthLayer layer, const DepthMap& nearest);
+
 }  // namespace umbra::raster

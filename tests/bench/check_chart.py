@@ -72,6 +72,11 @@ def main():
         fail("summary.md lacks the map variants' table")
     if "soft" not in scenes:
         fail("no area-light scene")
+    # Ikedo's penumbra beside PCSS on every area-light scene.
+    for name in scenes:
+        if name.startswith("soft") and not any(
+                r.get("map_variant") == "ikedo" for r in rows if r["name"] == name):
+            fail(f"{name}: no Ikedo penumbra row")
     if "coloured" not in scenes:
         fail("no scene with transmittance")
     if "| default |" not in (out / "summary.md").read_text():

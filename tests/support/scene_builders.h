@@ -66,4 +66,24 @@ inline Model l_prism(double lift) {
   return m;
 }
 
+/// A unit box standing on a floor slab under a unit square area light at
+/// height 4, seen from (0, 6, 6) at 64 x 48 (the map method's area-light
+/// tests: PCSS, Ikedo's penumbra).
+inline geometry::Scene box_under_square_light() {
+  geometry::Scene scene;
+  scene.camera = {.eye = {0, 6, 6},
+                  .look_at = {0, 0, 0},
+                  .up = {0, 1, 0},
+                  .fov_y_deg = 40,
+                  .width = 64,
+                  .height = 48};
+  scene.models.push_back(box({-4, -0.5, -4}, {4, 0, 4}));
+  scene.models.push_back(box({-0.5, 0, -0.5}, {0.5, 1, 0.5}));
+  geometry::Light light;
+  light.type = geometry::LightType::area;
+  light.vertices = {{-0.5, 4, -0.5}, {-0.5, 4, 0.5}, {0.5, 4, 0.5}, {0.5, 4, -0.5}};
+  scene.lights = {light};
+  return scene;
+}
+
 }  // namespace umbra::test

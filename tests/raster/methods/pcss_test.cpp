@@ -76,19 +76,7 @@ TEST(Pcss, MapMethodRendersAnAreaLightAndValidationScoresIt) {
   // A box on a floor under a square light: the map frame holds V estimates
   // (visibility.0), exact where nothing is near (0 mismatches far from the
   // box is not claimed: PCSS errs in the penumbra), within [0, 1] everywhere.
-  geometry::Scene scene;
-  scene.camera = {.eye = {0, 6, 6},
-                  .look_at = {0, 0, 0},
-                  .up = {0, 1, 0},
-                  .fov_y_deg = 40,
-                  .width = 64,
-                  .height = 48};
-  scene.models.push_back(test::box({-4, -0.5, -4}, {4, 0, 4}));
-  scene.models.push_back(test::box({-0.5, 0, -0.5}, {0.5, 1, 0.5}));
-  geometry::Light light;
-  light.type = geometry::LightType::area;
-  light.vertices = {{-0.5, 4, -0.5}, {-0.5, 4, 0.5}, {0.5, 4, 0.5}, {0.5, 4, -0.5}};
-  scene.lights = {light};
+  const geometry::Scene scene = test::box_under_square_light();
   RenderOptions options;
   options.method = Method::map;
   options.map.resolution = 512;
