@@ -10,7 +10,7 @@ target_compile_options(umbra_options INTERFACE
   -ffp-contract=off)
 # The project's own folders (cli/, tests/, fuzz/, ...) are included from the
 # root: `#include <tests/support/work_dir.h>`. The libraries' headers go by
-# their installed names, `<umbra/geometry/scene.h>` (umbra_include_tree).
+# their installed names, `<umbra/geometry/scene.h>` (UMBRA_BUILD_INCLUDE_DIR below).
 target_include_directories(umbra_options INTERFACE ${PROJECT_SOURCE_DIR})
 
 # CI builds with warnings as errors (scripts/test.sh); a user's build of a
