@@ -8,6 +8,7 @@
 #include <cli/stats_json.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
+#include <umbra/raster/methods/ikedo_functions.h>
 #include <umbra/raster/methods/map_variants.h>
 #include <umbra/raster/render.h>
 #include <umbra/util/input_error.h>
@@ -135,13 +136,10 @@ raster::ShadowMapOptions map_options(const RenderArgs& args) {
                                         : raster::MapVariant::depth;
     if (v == "id-polygon") map.id_granularity = raster::IdGranularity::polygon;
   }
-  if (args.ikedo_coeffs) {
-    const char c = (*args.ikedo_coeffs)[0];
-    map.ikedo_coefficients = c == 'b'   ? raster::IkedoCoefficients::b
-                             : c == 'c' ? raster::IkedoCoefficients::c
-                             : c == 'd' ? raster::IkedoCoefficients::d
-                                        : raster::IkedoCoefficients::a;
-  }
+  if (args.ikedo_coeffs)  // one of the sets' names (the option's IsMember)
+    for (const auto set : {raster::IkedoCoefficients::a, raster::IkedoCoefficients::b,
+                           raster::IkedoCoefficients::c, raster::IkedoCoefficients::d})
+      if (*args.ikedo_coeffs == raster::ikedo_coefficients_name(set)) map.ikedo_coefficients = set;
   if (args.ikedo_filter == "bi") map.ikedo_corners = raster::IkedoCorners::two;
   return map;
 }

@@ -42,12 +42,19 @@ double penumbra_half_width(double x, double light_radius, double cos_incidence) 
   return light_radius * std::max(x, 0.0) / std::max(cos_incidence, 1e-6);
 }
 
-double quantise_qp(double qp) {
-  return std::round(std::clamp(qp, 0.0, 1.0) * (kQpLevels - 1)) / (kQpLevels - 1);
+namespace {
+
+/// The nearest of the 64 levels, k in [0, 63].
+int qp_level(double qp) {
+  return static_cast<int>(std::lround(std::clamp(qp, 0.0, 1.0) * (kQpLevels - 1)));
 }
 
+}  // namespace
+
+double quantise_qp(double qp) { return static_cast<double>(qp_level(qp)) / (kQpLevels - 1); }
+
 double penumbra_shade(double qp, double half_width_texels, const EdgeDistances& table) {
-  const int level = static_cast<int>(std::lround(std::clamp(qp, 0.0, 1.0) * (kQpLevels - 1)));
+  const int level = qp_level(qp);
   if (level == 0) return 0;
   if (level == kQpLevels - 1) return 1;
   const double d = table[level];
