@@ -6,11 +6,13 @@
 #include <cli/render_command.h>
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
+#include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/raster/methods/ikedo_functions.h>
 #include <umbra/raster/methods/map_variants.h>
 #include <umbra/raster/render.h>
+#include <umbra/util/cpu_budget.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
 #include <umbra/util/phase_clock.h>
@@ -22,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace umbra::cli {
@@ -286,6 +289,9 @@ int run_render(const RenderArgs& args) {
     outputs.push_back({args.stats_json, "--stats-json"});
   }
   check_outputs_distinct({{scene_path, "the input scene"}}, outputs);
+  // With a CPU to spare, the image module loads while the scene loads and renders.
+  std::optional<raster::codec::Preload> codec;
+  if (util::resolve_threads(args.threads) < util::usable_cpus()) codec.emplace();
 
   RenderTimings timings;
   auto phase = std::chrono::steady_clock::now();

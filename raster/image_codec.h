@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -74,5 +75,25 @@ inline constexpr const char* kEntryPoint = "umbra_image_codec";
 /// The module, loaded on first use (thread-safe). Throws std::runtime_error
 /// naming the paths tried when it cannot be loaded: an installation fault.
 const Functions& functions();
+
+/// Loads the module on a thread of its own while the caller goes on, for a
+/// command that will read or write an image and leaves a CPU idle (fewer
+/// threads than it may use): OpenImageIO brings in some 270 shared
+/// libraries, and the dynamic loader's ~0.3 s then overlaps the scene's
+/// loading and the render instead of following them. Not when every CPU
+/// renders: the loader's page faults then contend with the render's
+/// (measured slower). Waits for the thread when destroyed. A failure is
+/// not reported here: functions() tries again, and throws, where the image
+/// is read or written.
+class Preload {
+ public:
+  Preload();
+  ~Preload();
+  Preload(const Preload&) = delete;
+  Preload& operator=(const Preload&) = delete;
+
+ private:
+  std::thread thread_;
+};
 
 }  // namespace umbra::raster::codec

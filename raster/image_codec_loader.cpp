@@ -78,4 +78,14 @@ const Functions& functions() {
   return *loaded;
 }
 
+Preload::Preload()
+    : thread_([] {
+        try {
+          functions();
+        } catch (...) {  // reported by the caller's own call, where it reads or writes
+        }
+      }) {}
+
+Preload::~Preload() { thread_.join(); }
+
 }  // namespace umbra::raster::codec
