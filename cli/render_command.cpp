@@ -12,7 +12,6 @@
 #include <umbra/raster/methods/ikedo_functions.h>
 #include <umbra/raster/methods/map_variants.h>
 #include <umbra/raster/render.h>
-#include <umbra/util/cpu_budget.h>
 #include <umbra/util/input_error.h>
 #include <umbra/util/input_file.h>
 #include <umbra/util/phase_clock.h>
@@ -290,8 +289,7 @@ int run_render(const RenderArgs& args) {
   }
   check_outputs_distinct({{scene_path, "the input scene"}}, outputs);
   // With a CPU to spare, the image module loads while the scene loads and renders.
-  std::optional<raster::codec::Preload> codec;
-  if (util::resolve_threads(args.threads) < util::usable_cpus()) codec.emplace();
+  const raster::codec::Preload codec(args.threads);
 
   RenderTimings timings;
   auto phase = std::chrono::steady_clock::now();

@@ -10,7 +10,6 @@
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/raster/validate.h>
-#include <umbra/util/cpu_budget.h>
 
 #include <fmt/format.h>
 
@@ -168,8 +167,7 @@ int run_validate(const ValidateArgs& args) {
                                          {image, "the image to validate"}};
   check_outputs_distinct(inputs, outputs);
   // With a CPU to spare, the image module loads while the scene loads and the truth is made.
-  std::optional<raster::codec::Preload> codec;
-  if (util::resolve_threads(args.threads) < util::usable_cpus()) codec.emplace();
+  const raster::codec::Preload codec(args.threads);
   const auto start = std::chrono::steady_clock::now();
   auto phase = start;
   const auto lap = [&phase] {

@@ -77,23 +77,23 @@ inline constexpr const char* kEntryPoint = "umbra_image_codec";
 const Functions& functions();
 
 /// Loads the module on a thread of its own while the caller goes on, for a
-/// command that will read or write an image and leaves a CPU idle (fewer
-/// threads than it may use): OpenImageIO brings in some 270 shared
-/// libraries, and the dynamic loader's ~0.3 s then overlaps the scene's
-/// loading and the render instead of following them. Not when every CPU
-/// renders: the loader's page faults then contend with the render's
-/// (measured slower). Waits for the thread when destroyed. A failure is
-/// not reported here: functions() tries again, and throws, where the image
-/// is read or written.
+/// command that will read or write an image, when its `threads` (0: every
+/// CPU it may use, util::resolve_threads) leave a CPU idle: OpenImageIO
+/// brings in some 270 shared libraries, and the dynamic loader's ~0.3 s
+/// then overlaps the scene's loading and the render instead of following
+/// them. Nothing when every CPU renders: the loader's page faults then
+/// contend with the render's (measured slower). Waits for the thread when
+/// destroyed. A failure is not reported here: functions() tries again, and
+/// throws, where the image is read or written.
 class Preload {
  public:
-  Preload();
+  explicit Preload(unsigned threads);
   ~Preload();
   Preload(const Preload&) = delete;
   Preload& operator=(const Preload&) = delete;
 
  private:
-  std::thread thread_;
+  std::thread thread_;  ///< not joinable when nothing was started
 };
 
 }  // namespace umbra::raster::codec

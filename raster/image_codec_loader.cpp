@@ -8,6 +8,7 @@
 // unloaded: OpenImageIO keeps threads and caches that outlive any point
 // where dlclose would be safe.
 #include <umbra/raster/image_codec.h>
+#include <umbra/util/cpu_budget.h>
 
 #include <dlfcn.h>
 
@@ -78,14 +79,18 @@ const Functions& functions() {
   return *loaded;
 }
 
-Preload::Preload()
-    : thread_([] {
-        try {
-          functions();
-        } catch (...) {  // reported by the caller's own call, where it reads or writes
-        }
-      }) {}
+Preload::Preload(unsigned threads) {
+  if (util::resolve_threads(threads) >= util::usable_cpus()) return;
+  thread_ = std::thread([] {
+    try {
+      functions();
+    } catch (...) {  // reported by the caller's own call, where it reads or writes
+    }
+  });
+}
 
-Preload::~Preload() { thread_.join(); }
+Preload::~Preload() {
+  if (thread_.joinable()) thread_.join();
+}
 
 }  // namespace umbra::raster::codec
