@@ -1,6 +1,8 @@
 # CTest labels (CONTRIBUTING.md): every test is `fast` or `slow`; tests
 # that run an umbra program (CMake-script tests, replays, smoke runs) are
-# also `cli`. `ctest -L fast` is the inner loop (under a minute here);
+# also `cli`; those that feed umbra hostile input (fuzz replays, fuzz.check,
+# the CLI's refusals) are also `edge`, the sanitizer slice CI runs.
+# `ctest -L fast` is the inner loop (under a minute here);
 # `slow` holds the sweeps, the chart smoke run, the 1,024-lamp city, the
 # determinism runs and the area-light scenes (their exact visible fractions
 # take seconds a frame; the gtests prove the same code under sanitizers).
