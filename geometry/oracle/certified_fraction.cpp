@@ -177,7 +177,7 @@ double neighbourhood_area(const Corner& p, const Corner& q, const Box2& box) {
 std::optional<double> certified_piece_fraction(
     const LightPiece& piece, const SamplePoint& sp,
     std::span<const std::vector<BlockerTriangle>> polygons, double tolerance,
-    const std::array<Vec3, 2>* h_box) {
+    const std::array<Vec3, 2>* h_box, const ExactCorners* exact_corners) {
   CGAL::Protect_FPU_rounding<true> guard;
   // H on the hit triangle's plane, or the caller's tighter box around it.
   const IPoint d = ip(sp.direction);
@@ -238,11 +238,10 @@ std::optional<double> certified_piece_fraction(
     while (e <= 8 && std::pow(10.0, e) < needed) ++e;
     return e <= 8 ? e : 0;
   };
-  const auto near_side = [&](int e) {
-    // σ·(h(x) − (1 − 1/K)·h(H)) <= 0, h the light plane's height.
-    return IHalfspace{light_normal,
-                      dot(light_normal, f0) + h_height * Interval(1 - std::pow(10.0, -e)),
-                      -*h_side};
+  const auto near_side = [&](double factor) {
+    // σ·(h(x) − factor·h(H)) <= 0, h the light plane's height, factor =
+    // 1 − 1/K (one double: ExactCorners remakes the same plane).
+    return IHalfspace{light_normal, dot(light_normal, f0) + h_height * Interval(factor), -*h_side};
   };
   const std::size_t m = piece.hull.size();
   // The pyramid's own sides, for checking that a near plane left its tip
@@ -285,12 +284,13 @@ std::optional<double> certified_piece_fraction(
     return false;
   };
   std::optional<std::vector<IHalfspace>> wide_sides;  // made when first needed
+  std::vector<Vec3> wide;  // their corners: doubles, rounded, checked to hold the light's pyramid
   const auto make_wide_sides = [&]() -> bool {
     if (wide_sides) return true;
     Vec3 centre{0, 0, 0};
     for (const Vec3& c : piece.hull) centre = centre + c;
     centre = centre * (1.0 / static_cast<double>(m));
-    std::vector<Vec3> wide;  // doubles, rounded: checked to hold the light's pyramid below
+    wide.clear();
     for (const Vec3& c : piece.hull) wide.push_back(centre + (c - centre) * 2.0);
     std::vector<IHalfspace> made;
     for (std::size_t i = 0; i < m; ++i) {
@@ -324,6 +324,10 @@ std::optional<double> certified_piece_fraction(
   thread_local std::vector<Corner> ring;
   thread_local std::vector<std::pair<Interval, Interval>> exact_ring;
   thread_local std::vector<SweepEdge> edges;
+  thread_local std::vector<std::pair<Interval, Interval>> remade;
+  // A far blocker's corners are remade exactly when one is this wide: the
+  // light's size over 2^40, where its edges' budget starts to count.
+  const double remake_above = std::max(hu - lu, hv - lv) * 0x1p-40;
   candidates.clear();
   edges.clear();
   double budget = 0;  // area the midpoints' edges may miscount
@@ -375,6 +379,7 @@ std::optional<double> certified_piece_fraction(
         source = corner_sources(t);
         if (!clip(polygon, source, light_side, kLightPlane, t)) return std::nullopt;
         if (polygon.size() < 3) continue;
+        ClipChoice choice;
         bool in_front = true;
         for (const IPoint& x : polygon) {
           const Interval ahead = (h_height - dot(light_normal, x - f0)) * Interval(*h_side);
@@ -382,10 +387,13 @@ std::optional<double> certified_piece_fraction(
         }
         if (!in_front) {
           const int e = near_exponent(t);
-          if (e > 0 && tip_missed(polygon, source, near_side(e), t)) {
-            if (!clip(polygon, source, near_side(e), kLightPlane + e, t)) return std::nullopt;
+          const double factor = 1 - std::pow(10.0, -e);
+          if (e > 0 && tip_missed(polygon, source, near_side(factor), t)) {
+            if (!clip(polygon, source, near_side(factor), kLightPlane + e, t)) return std::nullopt;
+            choice = {e, factor, {}};
           } else {
             if (!make_wide_sides()) return std::nullopt;
+            choice = {0, 0, wide};
             for (std::size_t side = 0; side < m && polygon.size() >= 3; ++side)
               if (!clip(polygon, source, (*wide_sides)[side], kFirstSide + static_cast<int>(side),
                         t))
@@ -402,6 +410,25 @@ std::optional<double> certified_piece_fraction(
           const double error = std::max(y[u].sup() - y[u].inf(), y[v].sup() - y[v].inf());
           if (!std::isfinite(error)) return std::nullopt;
           ring.push_back({mid(y[u]), mid(y[v]), error, source[c]});
+        }
+        bool wide_corner = false;
+        for (const Corner& c : ring) wide_corner = wide_corner || c.error > remake_above;
+        if (exact_corners && wide_corner) {
+          // The same corners, exactly: each must overlap its interval (both
+          // hold the true corner), else they are not the same corners and
+          // the intervals stay.
+          exact_corners->ring(t, choice, u, v, remade);
+          bool same = remade.size() == exact_ring.size();
+          for (std::size_t c = 0; same && c < remade.size(); ++c)
+            same = exact_ring[c].first.do_overlap(remade[c].first) &&
+                   exact_ring[c].second.do_overlap(remade[c].second);
+          for (std::size_t c = 0; same && c < remade.size(); ++c) {
+            const auto& [ru, rv] = remade[c];
+            exact_ring[c] = remade[c];
+            ring[c].u = mid(ru);
+            ring[c].v = mid(rv);
+            ring[c].error = std::max(ru.sup() - ru.inf(), rv.sup() - rv.inf());
+          }
         }
       }
       Interval twice_area(0);

@@ -18,10 +18,12 @@
 // seen from H, the clip edges and the light's edges are left.
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/oracle/area_light_pieces.h>
+#include <umbra/geometry/oracle/covered_area_sweep.h>
 
 #include <array>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace umbra::geometry::soft {
@@ -36,6 +38,32 @@ struct BlockerTriangle {
   std::array<bool, 3> through{false, false, false};  ///< edge (v[e], v[e+1]) holds H
 };
 
+/// Which planes a far blocker was clipped to after the light's plane: the
+/// near plane at `near_factor` of the way from the light's plane to H
+/// (1 − 10^-e, when `near_exponent` e > 0); else, when `wide` is not
+/// empty, the sides from H through consecutive corners of `wide` (the
+/// piece's hull doubled about its centroid, rounded); else neither.
+struct ClipChoice {
+  int near_exponent = 0;
+  double near_factor = 0;
+  std::span<const Vec3> wide;
+};
+
+/// A far blocker's corners made exactly, from the exact H: its triangle
+/// clipped as the interval path clipped it, projected centrally from H onto
+/// the light's plane, each coordinate rounded to an interval of two ulps.
+/// For blockers beside H, whose interval corners the projection widens by
+/// the factor it scales by (up to 10^8) past any useful bound, while the
+/// exact corners cost a few hundred rational operations (exact_corners.h).
+class ExactCorners {
+ public:
+  virtual ~ExactCorners() = default;
+  /// The corners' coordinates u and v in the order the interval clip makes
+  /// them; empty when the clipped triangle has fewer than three.
+  virtual void ring(const std::array<Vec3, 3>& t, const ClipChoice& choice, int u, int v,
+                    std::vector<std::pair<Interval, Interval>>& out) const = 0;
+};
+
 /// The fraction of `piece` visible from H, the hit of `sp` on the plane of
 /// its hit triangle, given the triangles that may block it grouped by
 /// casting polygon (a polygon's surface is its fan triangles counted mod 2;
@@ -43,10 +71,12 @@ struct BlockerTriangle {
 /// the exact fraction; nullopt when that cannot be shown.
 /// `h_box`, when given, is a box known to hold H (the exact H rounded
 /// outwards): tighter than the interval H made from the ray, whose width
-/// the projection multiplies for blockers beside H.
+/// the projection multiplies for blockers beside H. `exact_corners`, when
+/// given (with h_box, from the same H), remakes the corners of far blockers
+/// whose intervals came out wide.
 std::optional<double> certified_piece_fraction(
     const LightPiece& piece, const SamplePoint& sp,
     std::span<const std::vector<BlockerTriangle>> polygons, double tolerance,
-    const std::array<Vec3, 2>* h_box = nullptr);
+    const std::array<Vec3, 2>* h_box = nullptr, const ExactCorners* exact_corners = nullptr);
 
 }  // namespace umbra::geometry::soft

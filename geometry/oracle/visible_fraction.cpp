@@ -4,6 +4,7 @@
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/oracle/area_light_pieces.h>
 #include <umbra/geometry/oracle/certified_fraction.h>
+#include <umbra/geometry/oracle/exact_corners.h>
 #include <umbra/geometry/oracle/flat_seam.h>
 #include <umbra/geometry/oracle/pyramid_filter.h>
 #include <umbra/geometry/oracle/rational_geometry.h>
@@ -236,7 +237,8 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
     if (!v) {
       // Once more from the exact H rounded outwards (tighter than the
       // interval H the ray gives, whose width blockers beside H magnify),
-      // before the exact union.
+      // with far blockers' wide corners made exactly from it, before the
+      // exact union.
       const P3& exact_h = h.get();
       std::array<double, 3> x;
       for (int k = 0; k < 3; ++k) x[k] = nearest_double(exact_h[k]);
@@ -245,7 +247,8 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
                std::nextafter(x[2], -INFINITY)},
           Vec3{std::nextafter(x[0], INFINITY), std::nextafter(x[1], INFINITY),
                std::nextafter(x[2], INFINITY)}};
-      v = certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance, &box);
+      const RationalCorners corners(piece, exact_h);
+      v = certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance, &box, &corners);
     }
     if (v) {
       result.fraction = *v;

@@ -224,7 +224,31 @@ TEST(CertifiedFraction, AgreesAtContactAndAlongOccludersEdges) {
   }
   EXPECT_GE(seen.samples, 200);    // 240
   EXPECT_GE(seen.penumbra, 100);   // 173
-  EXPECT_GE(seen.certified, 100);  // 189
+  EXPECT_GE(seen.certified, 100);  // 212 (204 without exact corners)
+}
+
+TEST(CertifiedFraction, CertifiesContactShadowsWithExactCorners) {
+  // A box standing on the floor under a light 0.1 wide straddling its wall
+  // x = 0.5; floor samples 1e-10 to 1e-4 outside the wall, in its contact
+  // penumbra. The wall's corners at the floor are clipped to a near plane
+  // 10^e closer to H (or, closer than 10^8 allows, to a wide pyramid) and
+  // projected by up to that factor: their interval corners come out too
+  // wide to certify (3 of the 15 from 1e-7 on did before). Remade exactly
+  // from the exact H (exact_corners.h), every sample certifies, and agrees
+  // with the exact V.
+  std::vector<Model> models{floor_model(), square(-0.5, 0.5, -0.5, 0.5, 1)};
+  models.push_back(polygon_model({{0.5, 0, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5}, {0.5, 0, 0.5}}));
+  models.push_back(
+      polygon_model({{-0.5, 0, -0.5}, {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 0, -0.5}}));
+  const Scene sc = scene_of(
+      models, {area_light({{0.45, 3, -0.05}, {0.45, 3, 0.05}, {0.55, 3, 0.05}, {0.55, 3, -0.05}})});
+  const SceneIndex index(sc);
+  Agreement seen;
+  for (const double off : {1e-10, 1e-9, 1e-7, 3e-7, 1e-6, 1e-5, 1e-4})
+    for (const double z : {-0.375, 0.0, 0.25}) compare(index, down_ray(0.5 + off, z), 0, seen);
+  EXPECT_EQ(seen.samples, 21);
+  EXPECT_EQ(seen.penumbra, 21);
+  EXPECT_EQ(seen.certified, 21);
 }
 
 TEST(CertifiedFraction, AgreesForBlockersNearlyParallelToTheLight) {
