@@ -45,6 +45,7 @@ nlohmann::ordered_json render_stats_json(const RenderRun& run, const raster::Ren
       {"shadow_bands_skipped", stats.shadow_bands_skipped},
       {"exact_fallback_pixels", stats.exact_fallback_pixels},
       {"exact_light_recounts", stats.exact_light_recounts},
+      {"area_exact_samples", stats.area_exact_samples},
       {"light_pixels", stats.light_pixels},
       {"twisted_polygons", stats.twisted_polygons},
       {"eye_degenerate_lights", stats.eye_degenerate_lights},

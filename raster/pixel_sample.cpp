@@ -27,14 +27,16 @@ PixelSample::PixelSample(std::size_t every)
   for (std::size_t l = 0; l < every; ++l) lights[l] = static_cast<std::uint32_t>(l);
 }
 
-void decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
+bool decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
                        const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
                        geometry::FractionPrecision precision, PixelSample& sample) {
-  const float v =
-      static_cast<float>(geometry::visible_fraction(index, ray, hit, light, precision).value);
+  const geometry::VisibleFraction fraction =
+      geometry::visible_fraction(index, ray, hit, light, precision);
+  const auto v = static_cast<float>(fraction.value);
   sample.visibility[k] = v;
   sample.classes[k] = v > 0 ? ShadowClass::lit : ShadowClass::shadowed;
   sample.counts[k] = 0;
+  return fraction.exact_union;
 }
 
 void decide_by_oracle(const geometry::SceneIndex& index, const geometry::SampleRay& ray,

@@ -43,8 +43,8 @@ struct PixelSample {
 /// Area light `light`, entry k of the sample's list, at the sample of `ray`
 /// whose first hit is `hit`: its visible fraction
 /// (geometry::visible_fraction, exact or certified), lit where it is above
-/// 0, count 0.
-void decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
+/// 0, count 0. True when the exact union made it (VisibleFraction::exact_union).
+bool decide_area_light(const geometry::SceneIndex& index, const geometry::SampleRay& ray,
                        const geometry::SurfaceHit& hit, std::size_t k, std::uint32_t light,
                        geometry::FractionPrecision precision, PixelSample& sample);
 

@@ -152,6 +152,10 @@ struct RenderStats {
   /// (pixel, light) counts decided again exactly where the visible point
   /// stood but a shadow polygon of the light was too close to call.
   std::uint64_t exact_light_recounts = 0;
+  /// (pixel, area light) pairs whose visible fraction the certified path
+  /// could not answer, made by the exact union instead (the volume method;
+  /// docs/soft-shadows.md, "The volume method's fraction").
+  std::uint64_t area_exact_samples = 0;
   /// (pixel, light) pairs whose shadow.<i> and count.<i> the frame keeps:
   /// pixels × lights, or for the volume method the lights' windows
   /// (light_windows.h), outside which no sample is in a light's range.

@@ -195,6 +195,7 @@ struct PieceResult {
   double fraction = 1;
   bool in_plane = false;
   bool certified = false;
+  bool exact_union = false;
 };
 
 /// The exact H, made on first use: a certified fraction never needs it.
@@ -273,6 +274,7 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
   }
   if (kept.empty()) return result;  // nothing between H and the light: V = 1
   result.fraction = exact_piece_fraction(piece, h.get(), exact(d), kept);
+  result.exact_union = true;
   return result;
 }
 
@@ -423,6 +425,7 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
             : piece_fraction(piece, h, ray.direction, sp, triangles, precision);
     in_plane = in_plane || r.in_plane;
     answer.certified = answer.certified || r.certified;
+    answer.exact_union = answer.exact_union || r.exact_union;
     fractions.push_back(r.fraction);
   }
   // One piece: its fraction. Several: weighted by their areas, which are

@@ -35,6 +35,11 @@ struct VisibleFraction {
   /// Some piece's fraction came from the certified path (within
   /// kCertifiedTolerance), not from the exact rational.
   bool certified = false;
+  /// Some piece's fraction came from the exact union of the blockers'
+  /// projections (CGAL's Boolean operations in rationals): always with
+  /// FractionPrecision::exact, with certified only where the certified
+  /// path could not answer (the cost a frame's statistics count).
+  bool exact_union = false;
 };
 
 /// Whether an area light's polygon has a surface of nonzero area (its

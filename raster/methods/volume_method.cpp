@@ -172,7 +172,7 @@ Frame render_volume(const geometry::SceneIndex& index,
   const geometry::VolumeCrossings crossings(scene, volumes);
   Frame frame(camera.width, camera.height, windows, options.threads);
   describe_lights(scene, frame);
-  std::atomic<std::uint64_t> fallbacks{0}, recounts{0};
+  std::atomic<std::uint64_t> fallbacks{0}, recounts{0}, area_exact{0};
   // Light l's count at a visible point, decided exactly on the ideal
   // volumes; where even that meets a degenerate configuration (the eye
   // segment through an edge of a side polygon, in its plane, or the eye on a
@@ -245,7 +245,7 @@ Frame render_volume(const geometry::SceneIndex& index,
     } else {
       sweep.emplace(windows, j);
     }
-    std::uint64_t row_fallbacks = 0, row_recounts = 0;
+    std::uint64_t row_fallbacks = 0, row_recounts = 0, row_area_exact = 0;
     for (int i = 0; i < camera.width; ++i) {
       const std::size_t pixel = frame.pixel(i, j);
       if (!whole) {
@@ -274,8 +274,8 @@ Frame render_volume(const geometry::SceneIndex& index,
           if (frame.is_soft(l)) {
             // Area lights: V per sample, certified in floating point
             // (docs/soft-shadows.md, "The volume method's fraction").
-            decide_area_light(index, ray, entry.hit, k, l, geometry::FractionPrecision::certified,
-                              sample);
+            row_area_exact += decide_area_light(index, ray, entry.hit, k, l,
+                                                geometry::FractionPrecision::certified, sample);
             continue;
           }
           if (eye.degenerate[l]) {
@@ -329,7 +329,8 @@ Frame render_volume(const geometry::SceneIndex& index,
       for (std::size_t k = 0; k < sample.lights.size(); ++k) {
         const std::uint32_t l = sample.lights[k];
         if (frame.is_soft(l)) {
-          decide_area_light(index, ray, *hit, k, l, geometry::FractionPrecision::certified, sample);
+          row_area_exact += decide_area_light(index, ray, *hit, k, l,
+                                              geometry::FractionPrecision::certified, sample);
           continue;
         }
         if (out_of_range(scene.lights[l], ray, tri)) {
@@ -343,9 +344,11 @@ Frame render_volume(const geometry::SceneIndex& index,
     }
     fallbacks += row_fallbacks;
     recounts += row_recounts;
+    area_exact += row_area_exact;
     progress.advance();
   });
   stats.exact_fallback_pixels = fallbacks;
+  stats.area_exact_samples = area_exact;
   stats.exact_light_recounts = recounts;
   stats.seconds_decide = util::seconds_since(start);
   return frame;

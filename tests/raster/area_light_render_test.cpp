@@ -2,6 +2,8 @@
 // the frame's visibility.<i> values, supersampling, the EXR round trip, and
 // the validator's 1e-6 rule.
 #include <tests/support/work_dir.h>
+#include <umbra/geometry/oracle/visible_fraction.h>
+#include <umbra/geometry/sample_ray.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
@@ -11,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 namespace umbra::raster {
 namespace {
@@ -74,6 +78,50 @@ TEST(AreaLightRender, VolumeAndExactGiveTheSameVisibleFractionsWithAPenumbra) {
   EXPECT_TRUE(report.lights[0].soft);
   EXPECT_LT(report.lights[0].max_error, 1e-7);  // the float AOV's rounding
   EXPECT_FALSE(report.lights[1].soft);
+}
+
+/// The (pixel, area light) samples of `scene`'s centre rays whose certified
+/// visible fraction needed the exact union, counted outside the renderer.
+std::uint64_t exact_union_samples(const geometry::Scene& scene) {
+  const geometry::SceneIndex index(scene);
+  const geometry::CameraFrame frame = geometry::camera_frame(scene.camera);
+  std::uint64_t n = 0;
+  for (int j = 0; j < frame.height; ++j)
+    for (int i = 0; i < frame.width; ++i) {
+      const geometry::SampleRay ray = geometry::sample_ray(frame, i, j);
+      const std::optional<geometry::SurfaceHit> hit = geometry::first_hit(index, ray);
+      if (!hit) continue;
+      for (std::uint32_t l = 0; l < scene.lights.size(); ++l)
+        if (scene.lights[l].type == geometry::LightType::area)
+          n += geometry::visible_fraction(index, ray, *hit, l,
+                                          geometry::FractionPrecision::certified)
+                   .exact_union;
+    }
+  return n;
+}
+
+TEST(AreaLightRender, StatisticsCountTheSamplesTheExactUnionMade) {
+  // counts.area_exact_samples: the samples the certified fraction could not
+  // answer, as many as a count outside the renderer finds. None in
+  // soft_square (every blocker far from its samples); some under a light
+  // 0.1 wide over the wall of a box standing on the floor (contact
+  // penumbrae, clip decisions too close to call in intervals).
+  geometry::Scene scene = soft_square();
+  RenderStats stats;
+  render(scene, {.method = Method::volume, .threads = 2}, &stats);
+  EXPECT_EQ(stats.area_exact_samples, 0u);
+  EXPECT_EQ(exact_union_samples(scene), 0u);
+  // A box standing on the floor (its walls meet the floor's samples).
+  geometry::Model box;
+  box.vertices = {{-0.5, 0, -0.5}, {0.5, 0, -0.5}, {0.5, 0, 0.5}, {-0.5, 0, 0.5},
+                  {-0.5, 1, -0.5}, {0.5, 1, -0.5}, {0.5, 1, 0.5}, {-0.5, 1, 0.5}};
+  box.polygons = {{4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  scene.models = {scene.models[0], box};
+  scene.camera.eye = {3, 4, 3};
+  scene.lights[0].vertices = {{0.45, 3, -0.05}, {0.45, 3, 0.05}, {0.55, 3, 0.05}, {0.55, 3, -0.05}};
+  render(scene, {.method = Method::volume, .threads = 2}, &stats);
+  EXPECT_GT(stats.area_exact_samples, 0u);  // 35
+  EXPECT_EQ(stats.area_exact_samples, exact_union_samples(scene));
 }
 
 TEST(AreaLightRender, ShadingScalesTheLightByItsVisibleFraction) {
