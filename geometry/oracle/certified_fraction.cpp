@@ -419,9 +419,11 @@ std::optional<double> certified_piece_fraction(
           // the intervals stay.
           exact_corners->ring(t, choice, u, v, remade);
           bool same = remade.size() == exact_ring.size();
-          for (std::size_t c = 0; same && c < remade.size(); ++c)
-            same = exact_ring[c].first.do_overlap(remade[c].first) &&
-                   exact_ring[c].second.do_overlap(remade[c].second);
+          for (std::size_t c = 0; same && c < remade.size(); ++c) {
+            const auto& [ru, rv] = remade[c];
+            same = std::isfinite(ru.sup() - ru.inf()) && std::isfinite(rv.sup() - rv.inf()) &&
+                   exact_ring[c].first.do_overlap(ru) && exact_ring[c].second.do_overlap(rv);
+          }
           for (std::size_t c = 0; same && c < remade.size(); ++c) {
             const auto& [ru, rv] = remade[c];
             exact_ring[c] = remade[c];
