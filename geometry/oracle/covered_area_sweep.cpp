@@ -1,8 +1,11 @@
+#include <umbra/geometry/exact/rational_rounding.h>
 #include <umbra/geometry/oracle/covered_area_sweep.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gmpxx.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -30,6 +33,21 @@ Interval side(double ax, double ay, double bx, double by, double px, double py) 
   return (Interval(bx) - ax) * (Interval(py) - ay) - (Interval(by) - ay) * (Interval(px) - ax);
 }
 
+/// The x of the crossing of the lines of s and t (which cross properly),
+/// exactly from the doubles, rounded to an interval of two ulps.
+Interval exact_crossing_x(const Span& s, const Span& t) {
+  const auto side_q = [](double ax, double ay, double bx, double by, double px,
+                         double py) -> mpq_class {
+    return (mpq_class(bx) - ax) * (mpq_class(py) - ay) -
+           (mpq_class(by) - ay) * (mpq_class(px) - ax);
+  };
+  const mpq_class da = side_q(s.xa, s.ya, s.xb, s.yb, t.xa, t.ya);
+  const mpq_class db = side_q(s.xa, s.ya, s.xb, s.yb, t.xb, t.yb);
+  const mpq_class x = t.xa + da / (da - db) * (mpq_class(t.xb) - t.xa);
+  const double d = nearest_double(x.get_mpq_t());
+  return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
+}
+
 /// The x of the proper crossing of spans s and t, if they cross properly
 /// (each edge's endpoints strictly on both sides of the other's line: exact
 /// orientations of the doubles). Crossings at an endpoint, and overlaps of
@@ -42,7 +60,12 @@ bool crossing(const Span& s, const Span& t, Event& out) {
   if (c == CGAL::COLLINEAR || d == CGAL::COLLINEAR || c == d) return false;
   const Interval da = side(s.xa, s.ya, s.xb, s.yb, t.xa, t.ya);
   const Interval db = side(s.xa, s.ya, s.xb, s.yb, t.xb, t.yb);
-  const Interval x = Interval(t.xa) + da / (da - db) * (Interval(t.xb) - t.xa);
+  Interval x = Interval(t.xa) + da / (da - db) * (Interval(t.xb) - t.xa);
+  // Nearly parallel edges (a blocker's edge and a touching triangle's clip
+  // edge on one true line, made two ways) give a wide interval, and a
+  // cluster as wide as their overlap would bound a whole light's area:
+  // then the crossing exactly, a few rational operations.
+  if (!(x.sup() - x.inf() <= 0x1p-40 * ((s.xb - s.xa) + (t.xb - t.xa)))) x = exact_crossing_x(s, t);
   // The crossing lies inside both spans' x-ranges, whatever the rounding.
   out.lo = std::max({x.inf(), s.xa, t.xa});
   out.hi = std::min({x.sup(), s.xb, t.xb});

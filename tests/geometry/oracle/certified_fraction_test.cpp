@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace umbra::geometry {
@@ -64,6 +65,34 @@ TEST(CoveredAreaSweep, TwoOverlappingTrianglesAreUnited) {
   add_triangle(edges, 0, 0, 1, 0, 1, 1);
   const soft::SweepAreas a = sweep(edges);
   expect_holds(a.covered, 0.75);
+  expect_holds(a.light, 1);
+}
+
+TEST(CoveredAreaSweep, NearlyParallelEdgesCrossAtAnExactX) {
+  // Two triangles reaching below the square whose top edges, 3·2^-40 apart
+  // at their ends, cross at x = 1/2: the union's top is the larger of
+  // y = 1/2 + δ(x + 1) and y = 1/2 + 3δ − δ(x + 1), area 1/2 + 7δ/4 in the
+  // square. Everything sheared by y += 0.7·x (areas kept; the rounded
+  // corners move the area by ~1e-17), so that the crossing's determinants
+  // are differences of products near 1 that round: its x in intervals is
+  // then ~3e-4 wide, and so was the covered area's bound (a cluster's
+  // width times the height); made exactly, the x is two ulps wide.
+  const double d = 0x1p-40;
+  const auto shear = [](double x, double y) { return std::pair{x, y + 0.7 * x}; };
+  std::vector<SweepEdge> edges;
+  const auto add = [&](std::vector<std::pair<double, double>> corners, EdgeKind kind) {
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const auto [ax, ay] = shear(corners[i].first, corners[i].second);
+      const auto [bx, by] =
+          shear(corners[(i + 1) % corners.size()].first, corners[(i + 1) % corners.size()].second);
+      edges.push_back({ax, ay, bx, by, kind, 0});
+    }
+  };
+  add({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, EdgeKind::light);
+  add({{-1, 0.5}, {0.5, -10}, {2, 0.5 + 3 * d}}, EdgeKind::counted);
+  add({{-1, 0.5 + 3 * d}, {0.5, -10}, {2, 0.5}}, EdgeKind::counted);
+  const soft::SweepAreas a = sweep(edges);
+  expect_holds(a.covered, 0.5 + 1.75 * d);
   expect_holds(a.light, 1);
 }
 
