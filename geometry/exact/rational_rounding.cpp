@@ -2,6 +2,8 @@
 
 #include <mpfr.h>
 
+#include <cmath>
+
 namespace umbra::geometry {
 
 double nearest_double(mpq_srcptr q) {
@@ -11,6 +13,11 @@ double nearest_double(mpq_srcptr q) {
   const double d = mpfr_get_d(r, MPFR_RNDN);
   mpfr_clear(r);
   return d;
+}
+
+DoubleBounds double_bounds(mpq_srcptr q) {
+  const double d = nearest_double(q);
+  return {std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)};
 }
 
 double nearest_sqrt(mpq_srcptr q) {

@@ -5,7 +5,6 @@
 #include <gmpxx.h>
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -44,8 +43,8 @@ Interval exact_crossing_x(const Span& s, const Span& t) {
   const mpq_class da = side_q(s.xa, s.ya, s.xb, s.yb, t.xa, t.ya);
   const mpq_class db = side_q(s.xa, s.ya, s.xb, s.yb, t.xb, t.yb);
   const mpq_class x = t.xa + da / (da - db) * (mpq_class(t.xb) - t.xa);
-  const double d = nearest_double(x.get_mpq_t());
-  return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
+  const DoubleBounds b = double_bounds(x.get_mpq_t());
+  return Interval(b.lo, b.hi);
 }
 
 /// The x of the proper crossing of spans s and t, if they cross properly

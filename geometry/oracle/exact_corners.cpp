@@ -1,16 +1,16 @@
+#include <umbra/geometry/exact/rational_rounding.h>
 #include <umbra/geometry/oracle/exact_corners.h>
 
-#include <cmath>
 #include <stdexcept>
 
 namespace umbra::geometry::soft {
 namespace {
 
-/// An interval of two ulps around the nearest double to x: it holds x.
+/// Two ulps around x, holding it (certified_fraction.cpp keeps its own
+/// corners where one is infinitely wide).
 Interval around(const FT& x) {
-  const double d = nearest_double(x);
-  if (!std::isfinite(d)) return Interval(-INFINITY, INFINITY);
-  return Interval(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
+  const DoubleBounds b = double_bounds(x.get_mpq_t());
+  return Interval(b.lo, b.hi);
 }
 
 }  // namespace
