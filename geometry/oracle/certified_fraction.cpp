@@ -174,10 +174,11 @@ double neighbourhood_area(const Corner& p, const Corner& q, const Box2& box) {
 
 }  // namespace
 
-std::optional<double> certified_piece_fraction(
-    const LightPiece& piece, const SamplePoint& sp,
-    std::span<const std::vector<BlockerTriangle>> polygons, double tolerance,
-    const std::array<Vec3, 2>* h_box, const ExactCorners* exact_corners) {
+std::optional<double> certified_piece_fraction(const LightPiece& piece, const SamplePoint& sp,
+                                               std::span<const BlockerTriangle> triangles,
+                                               std::span<const std::uint32_t> ends,
+                                               double tolerance, const std::array<Vec3, 2>* h_box,
+                                               const ExactCorners* exact_corners) {
   CGAL::Protect_FPU_rounding<true> guard;
   // H on the hit triangle's plane, or the caller's tighter box around it.
   const IPoint d = ip(sp.direction);
@@ -332,7 +333,9 @@ std::optional<double> certified_piece_fraction(
   edges.clear();
   double budget = 0;  // area the midpoints' edges may miscount
   std::uint32_t groups = 1;
-  for (const std::vector<BlockerTriangle>& blocker : polygons) {
+  for (std::size_t g = 0; g < ends.size(); ++g) {
+    const std::uint32_t first = g == 0 ? 0 : ends[g - 1];
+    const std::span<const BlockerTriangle> blocker = triangles.subspan(first, ends[g] - first);
     const bool parity = blocker.size() > 1;
     const std::uint32_t group = parity ? groups++ : 0;
     for (const BlockerTriangle& b : blocker) {
@@ -376,7 +379,7 @@ std::optional<double> certified_piece_fraction(
         }
       } else {
         polygon = {ip(t[0]), ip(t[1]), ip(t[2])};
-        source = corner_sources(t);
+        corner_sources(t, source);
         if (!clip(polygon, source, light_side, kLightPlane, t)) return std::nullopt;
         if (polygon.size() < 3) continue;
         ClipChoice choice;

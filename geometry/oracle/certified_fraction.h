@@ -67,16 +67,20 @@ class ExactCorners {
 /// The fraction of `piece` visible from H, the hit of `sp` on the plane of
 /// its hit triangle, given the triangles that may block it grouped by
 /// casting polygon (a polygon's surface is its fan triangles counted mod 2;
-/// a lone triangle is its own polygon). The answer is within `tolerance` of
+/// a lone triangle is its own polygon): polygon k's are
+/// triangles[ends[k − 1]] .. triangles[ends[k] − 1], from 0 for k = 0,
+/// `ends` increasing, its last the triangles' count. The answer is within `tolerance` of
 /// the exact fraction; nullopt when that cannot be shown.
 /// `h_box`, when given, is a box known to hold H (the exact H rounded
 /// outwards): tighter than the interval H made from the ray, whose width
 /// the projection multiplies for blockers beside H. `exact_corners`, when
 /// given (with h_box, from the same H), remakes the corners of far blockers
 /// whose intervals came out wide.
-std::optional<double> certified_piece_fraction(
-    const LightPiece& piece, const SamplePoint& sp,
-    std::span<const std::vector<BlockerTriangle>> polygons, double tolerance,
-    const std::array<Vec3, 2>* h_box = nullptr, const ExactCorners* exact_corners = nullptr);
+std::optional<double> certified_piece_fraction(const LightPiece& piece, const SamplePoint& sp,
+                                               std::span<const BlockerTriangle> triangles,
+                                               std::span<const std::uint32_t> ends,
+                                               double tolerance,
+                                               const std::array<Vec3, 2>* h_box = nullptr,
+                                               const ExactCorners* exact_corners = nullptr);
 
 }  // namespace umbra::geometry::soft

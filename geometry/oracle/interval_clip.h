@@ -78,9 +78,11 @@ struct Source {
 };
 
 /// The sources of a triangle's corners: corner i lies on edges i − 1 and i.
-inline std::vector<Source> corner_sources(const std::array<Vec3, 3>& t) {
-  return {
-      {-1, t[0], t[0], true, 0b101}, {-1, t[1], t[1], true, 0b011}, {-1, t[2], t[2], true, 0b110}};
+/// Into `out` (a caller's scratch, reused triangle after triangle).
+inline void corner_sources(const std::array<Vec3, 3>& t, std::vector<Source>& out) {
+  out.assign({{-1, t[0], t[0], true, 0b101},
+              {-1, t[1], t[1], true, 0b011},
+              {-1, t[2], t[2], true, 0b110}});
 }
 
 /// Sutherland–Hodgman against the closed halfspace h, each corner's side

@@ -1,6 +1,7 @@
 #include <umbra/geometry/oracle/interval_clip.h>
 #include <umbra/geometry/oracle/pyramid_filter.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace umbra::geometry::soft {
@@ -85,6 +86,41 @@ bool PyramidFilter::misses(const Box& b) const {
     if (!missed) return false;
   }
   return true;
+}
+
+HitSide::HitSide(const SamplePoint& sp) : sp_(&sp) {
+  IPoint h;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;  // upwards: the widths round up
+    h = interval_hit(sp);
+    width_ = {h.x.sup() - h.x.inf(), h.y.sup() - h.y.inf(), h.z.sup() - h.z.inf()};
+  }
+  // Any point of the box will do; the true H lies within width_ of it.
+  m_ = {std::clamp(mid(h.x), h.x.inf(), h.x.sup()), std::clamp(mid(h.y), h.y.inf(), h.y.sup()),
+        std::clamp(mid(h.z), h.z.inf(), h.z.sup())};
+}
+
+Sign HitSide::of(const std::array<Vec3, 3>& t) const {
+  // Round to nearest (the default mode here), as Shewchuk's bound assumes.
+  const Vec3 a = t[1] - t[0], b = t[2] - t[0], c = m_ - t[0];
+  const double ab_x = a.y * b.z - a.z * b.y, ab_y = a.z * b.x - a.x * b.z,
+               ab_z = a.x * b.y - a.y * b.x;
+  const double det = ab_x * c.x + ab_y * c.y + ab_z * c.z;
+  const double n_x = std::abs(a.y * b.z) + std::abs(a.z * b.y),
+               n_y = std::abs(a.z * b.x) + std::abs(a.x * b.z),
+               n_z = std::abs(a.x * b.y) + std::abs(a.y * b.x);
+  const double permanent = n_x * std::abs(c.x) + n_y * std::abs(c.y) + n_z * std::abs(c.z);
+  // The box term with room for its own roundings and for |n_k| above its
+  // rounded products (a few ulps each).
+  const double moved = (n_x * width_.x + n_y * width_.y + n_z * width_.z) * (1 + 1e-13);
+  const double bound = 1e-15 * permanent + moved;
+  // Tiny magnitudes (subnormal products void the bound) or non-finite
+  // ones: the exact predicate.
+  if (std::isfinite(bound) && permanent > 1e-280) {
+    if (det > bound) return Sign::positive;
+    if (det < -bound) return Sign::negative;
+  }
+  return orientation_at_hit(t[0], HPoint::point(t[1]), HPoint::point(t[2]), *sp_);
 }
 
 }  // namespace umbra::geometry::soft

@@ -1,3 +1,4 @@
+#include <umbra/geometry/oracle/closed_shells.h>
 #include <umbra/geometry/oracle/scene_index.h>
 
 #include <algorithm>
@@ -41,6 +42,13 @@ const Bvh* SceneIndex::tree() const {
     bvh_->built.store(true, std::memory_order_release);
   });
   return &bvh_->bvh;
+}
+
+const ShellTable& SceneIndex::shells() const {
+  std::call_once(shells_->once, [this] {
+    shells_->table = std::make_shared<const ShellTable>(shell_table(*scene_, polygons_));
+  });
+  return *shells_->table;
 }
 
 void SceneIndex::query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, double slack,

@@ -17,6 +17,8 @@
 
 namespace umbra::geometry {
 
+struct ShellTable;
+
 struct IndexedPolygon {
   std::uint32_t model = 0;
   std::uint32_t polygon = 0;  ///< within its model
@@ -71,6 +73,10 @@ class SceneIndex {
   const Box& bounds() const { return bounds_; }
   /// Largest absolute coordinate in bounds(): sets the scale of float slack.
   double magnitude() const { return magnitude_; }
+  /// The casting triangles' shells (closed_shells.h), made on first use
+  /// (the area lights' visible fraction asks; nothing else does).
+  /// Thread-safe.
+  const ShellTable& shells() const;
 
  private:
   const Scene* scene_;
@@ -87,6 +93,11 @@ class SceneIndex {
     Bvh bvh;
   };
   std::unique_ptr<LazyBvh> bvh_ = std::make_unique<LazyBvh>();  ///< behind a pointer: movable
+  struct LazyShells {
+    std::once_flag once;
+    std::shared_ptr<const ShellTable> table;
+  };
+  std::unique_ptr<LazyShells> shells_ = std::make_unique<LazyShells>();
   Box bounds_;
   double magnitude_ = 0;
 };

@@ -3,6 +3,7 @@
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/oracle/area_light_pieces.h>
+#include <umbra/geometry/oracle/blockers_at_h.h>
 #include <umbra/geometry/oracle/certified_fraction.h>
 #include <umbra/geometry/oracle/exact_corners.h>
 #include <umbra/geometry/oracle/flat_seam.h>
@@ -84,88 +85,7 @@ bool blocked_by_touching_triangle(const Pyramid& pyramid, const P3& n,
   return convex_polygon(ring, out);
 }
 
-/// A casting fan triangle near the light, as H sees it: far from H (it
-/// blocks its central projection) or with H in its closure (it blocks a
-/// limit region, the halfspaces of its edges through H).
-struct TriangleAtH {
-  std::array<Vec3, 3> v;
-  bool touches = false;
-  /// Touching: 1 for each edge (v[e], v[e+1]) through H.
-  std::array<bool, 3> through{false, false, false};
-};
-
-/// The candidates' fan triangles that may block, polygon by polygon (a
-/// polygon's surface is its fan triangles counted mod 2), and the touching
-/// triangles of every polygon, casting or not, for the flat-seam test. All
-/// decided with filtered predicates on the input doubles: nothing exact is
-/// built for a triangle that cannot block.
-struct TrianglesAtH {
-  std::vector<std::vector<TriangleAtH>> polygons;
-  std::vector<Touching> touching;
-  bool touches_polygon_edge = false;  ///< H on a polygon edge or vertex (not a diagonal)
-};
-
 HPoint at(const Vec3& v) { return HPoint::point(v); }
-
-TrianglesAtH triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
-                          const SamplePoint& sp, const SurfaceHit& hit, std::span<const Vec3> light,
-                          const PyramidFilter& filter) {
-  TrianglesAtH out;
-  const HPoint eye = at(sp.eye);
-  const HPoint along = HPoint::at_infinity(sp.direction);
-  for (std::uint32_t pi : candidates) {
-    const IndexedPolygon& poly = index.polygons()[pi];
-    const std::size_t size = index.size_of(poly);
-    std::vector<TriangleAtH> own;
-    for (const FanTriangle& ft : poly.surface->triangles) {
-      TriangleAtH t{{index.vertex(poly, ft.local[0]), index.vertex(poly, ft.local[1]),
-                     index.vertex(poly, ft.local[2])}};
-      // Certainly outside every pyramid: it neither blocks nor holds H.
-      if (filter.misses(t.v)) continue;
-      const std::array<Vec3, 3>& v = t.v;
-      // H lies in the plane of the hit's fan triangle, and of all of a
-      // planar hit polygon's, by construction: no exact test needed.
-      const bool in_hit_plane =
-          pi == hit.polygon &&
-          (poly.surface->shape == PolygonShape::planar ||
-           static_cast<std::size_t>(&ft - poly.surface->triangles.data()) == hit.triangle);
-      if (in_hit_plane || orientation_at_hit(v[0], at(v[1]), at(v[2]), sp) == Sign::zero) {
-        // H in the triangle's plane: it blocks something only when its
-        // closure holds H (elsewhere in its plane it projects to a line).
-        // Which side of edge (p, q) H lies on, in the plane: with H = E +
-        // t·d, det(q − p, H − p, d) = det(q − p, E − p, d), whose sign is
-        // the side's times sign(n·d).
-        const Sign nd = orientation(v[0], at(v[1]), at(v[2]), along);
-        // The ray runs in its plane: in the limit it blocks nothing, and
-        // with H in its closure some corner projects onto the ray no later
-        // than H, which first_hit reports as a grazing boundary.
-        if (nd == Sign::zero) continue;
-        bool outside = false, on_polygon_edge = false;
-        for (int e = 0; e < 3 && !outside; ++e) {
-          const Sign side = orientation(v[e], at(v[(e + 1) % 3]), eye, along) * nd;
-          if (side == Sign::negative) outside = true;
-          if (side == Sign::zero) {
-            t.through[e] = true;
-            on_polygon_edge = on_polygon_edge || is_polygon_edge(ft, e, size);
-          }
-        }
-        if (outside) continue;
-        t.touches = true;
-        out.touching.push_back({t.v, poly.casts_shadows});
-        out.touches_polygon_edge = out.touches_polygon_edge || on_polygon_edge;
-        // In the limit it blocks only light beyond its plane (seen from
-        // P): none when no light vertex lies strictly there.
-        bool beyond = false;
-        for (const Vec3& y : light)
-          beyond = beyond || orientation(v[0], at(v[1]), at(v[2]), at(y)) == nd;
-        if (!beyond) continue;
-      }
-      if (poly.casts_shadows) own.push_back(t);
-    }
-    if (!own.empty()) out.polygons.push_back(std::move(own));
-  }
-  return out;
-}
 
 /// Whether the far triangle `v` may meet the open pyramid from H over the
 /// piece: false when all its corners lie on the closed outer side of one of
@@ -214,7 +134,7 @@ class LazyH {
 
 /// V of one piece, exactly, from the triangles that may block it.
 double exact_piece_fraction(const LightPiece& piece, const P3& h, const P3& d,
-                            const std::vector<std::vector<const TriangleAtH*>>& kept);
+                            const std::vector<std::vector<const BlockerTriangle*>>& kept);
 
 PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, const SamplePoint& sp,
                            const TrianglesAtH& triangles, FractionPrecision precision) {
@@ -229,12 +149,8 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
   // exact may-meet test differs from it only within the filter's margin of
   // a pyramid's plane, and the clipping sorts those out either way).
   if (precision == FractionPrecision::certified) {
-    std::vector<std::vector<BlockerTriangle>> blockers;
-    for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
-      blockers.emplace_back();
-      for (const TriangleAtH& t : polygon) blockers.back().push_back({t.v, t.touches, t.through});
-    }
-    std::optional<double> v = certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance);
+    std::optional<double> v = certified_piece_fraction(piece, sp, triangles.blockers,
+                                                       triangles.ends, kCertifiedTolerance);
     if (!v) {
       // Once more from the exact H rounded outwards (tighter than the
       // interval H the ray gives, whose width blockers beside H magnify),
@@ -249,7 +165,8 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
           Vec3{std::nextafter(x[0], INFINITY), std::nextafter(x[1], INFINITY),
                std::nextafter(x[2], INFINITY)}};
       const RationalCorners corners(piece, exact_h);
-      v = certified_piece_fraction(piece, sp, blockers, kCertifiedTolerance, &box, &corners);
+      v = certified_piece_fraction(piece, sp, triangles.blockers, triangles.ends,
+                                   kCertifiedTolerance, &box, &corners);
     }
     if (v) {
       result.fraction = *v;
@@ -265,11 +182,13 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
   for (std::size_t i = 0; i < m; ++i)
     inner[i] = orientation_at_hit(piece.hull[i], at(piece.hull[(i + 1) % m]),
                                   at(piece.hull[(i + 2) % m]), sp);
-  std::vector<std::vector<const TriangleAtH*>> kept;
-  for (const std::vector<TriangleAtH>& polygon : triangles.polygons) {
-    std::vector<const TriangleAtH*> these;
-    for (const TriangleAtH& t : polygon)
+  std::vector<std::vector<const BlockerTriangle*>> kept;
+  for (std::size_t k = 0; k < triangles.ends.size(); ++k) {
+    std::vector<const BlockerTriangle*> these;
+    for (std::uint32_t i = triangles.begin_of(k); i < triangles.ends[k]; ++i) {
+      const BlockerTriangle& t = triangles.blockers[i];
       if (t.touches || may_meet_pyramid(t.v, piece, inner, h_side, sp)) these.push_back(&t);
+    }
     if (!these.empty()) kept.push_back(std::move(these));
   }
   if (kept.empty()) return result;  // nothing between H and the light: V = 1
@@ -279,7 +198,7 @@ PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, con
 }
 
 double exact_piece_fraction(const LightPiece& piece, const P3& h, const P3& d,
-                            const std::vector<std::vector<const TriangleAtH*>>& kept) {
+                            const std::vector<std::vector<const BlockerTriangle*>>& kept) {
   const std::size_t m = piece.hull.size();
   const std::array<Vec3, 3>& f = piece.fan.front();
   const LightPlane plane(f[0], f[1], f[2]);
@@ -308,10 +227,10 @@ double exact_piece_fraction(const LightPiece& piece, const P3& h, const P3& d,
   // (CGAL joins a range by divide and conquer, far faster than one by one).
   std::vector<Polygon2> singles;
   std::vector<PolygonWithHoles> multiples;
-  for (const std::vector<const TriangleAtH*>& polygon : kept) {
+  for (const std::vector<const BlockerTriangle*>& polygon : kept) {
     PolygonSet own;
     std::size_t parts = 0;
-    for (const TriangleAtH* t : polygon) {
+    for (const BlockerTriangle* t : polygon) {
       Polygon2 blocked_part;
       if (t->touches) {
         const std::array<P3, 3> q{exact(t->v[0]), exact(t->v[1]), exact(t->v[2])};
@@ -401,7 +320,11 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
   std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
 
-  const TrianglesAtH triangles = triangles_at(index, candidates, sp, hit, light.vertices, filter);
+  thread_local TrianglesAtH triangles;  // per-thread scratch, as the candidates
+  triangles_at(index, candidates, sp, hit, light.vertices, filter, triangles);
+  Box light_box;
+  for (const Vec3& v : light.vertices) light_box.extend(v);
+  keep_one_side(index.shells(), triangles, sp, light_box, filter);
   // H = eye + t·d exactly, t = n·(a − eye) / n·d on the hit triangle's
   // plane: made only when something may block.
   const auto exact_h = [&] {
@@ -418,11 +341,14 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   thread_local std::vector<double> fractions;
   fractions.clear();
   for (const LightPiece& piece : pieces) {
-    const PieceResult r =
-        triangles.polygons.empty()
-            ? PieceResult{1, orientation_at_hit(piece.fan[0][0], at(piece.fan[0][1]),
-                                                at(piece.fan[0][2]), sp) == Sign::zero}
-            : piece_fraction(piece, h, ray.direction, sp, triangles, precision);
+    PieceResult r;
+    if (triangles.empty() || triangles.blocks_all) {
+      r.in_plane = orientation_at_hit(piece.fan[0][0], at(piece.fan[0][1]), at(piece.fan[0][2]),
+                                      sp) == Sign::zero;
+      r.fraction = triangles.blocks_all && !r.in_plane ? 0 : 1;  // in its plane: taken as 1
+    } else {
+      r = piece_fraction(piece, h, ray.direction, sp, triangles, precision);
+    }
     in_plane = in_plane || r.in_plane;
     answer.certified = answer.certified || r.certified;
     answer.exact_union = answer.exact_union || r.exact_union;

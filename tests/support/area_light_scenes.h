@@ -33,6 +33,19 @@ inline Model square(double x0, double x1, double z0, double z1, double y, bool c
   return polygon_model({{x0, y, z0}, {x0, y, z1}, {x1, y, z1}, {x1, y, z0}}, casts);
 }
 
+/// A closed octahedron around c, each face its own polygon (a mesh: edges
+/// between faces cancel in the certified sweep), radii rx, ry, rz; faces
+/// counter-clockwise seen from outside.
+inline Model octahedron(const Vec3& c, double rx, double ry, double rz) {
+  Model m;
+  m.name = "octahedron";
+  m.vertices = {{c.x + rx, c.y, c.z}, {c.x - rx, c.y, c.z}, {c.x, c.y + ry, c.z},
+                {c.x, c.y - ry, c.z}, {c.x, c.y, c.z + rz}, {c.x, c.y, c.z - rz}};
+  m.polygons = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return m;
+}
+
 inline Light area_light(std::vector<Vec3> vertices) {
   Light l;
   l.type = LightType::area;

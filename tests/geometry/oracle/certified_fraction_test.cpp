@@ -138,18 +138,6 @@ double grid(std::mt19937& rng, double lo, double hi, int denominator) {
   return static_cast<double>(k(rng)) / denominator;
 }
 
-/// A closed octahedron around c, each face its own polygon (a mesh: edges
-/// between faces cancel in the certified sweep), radii rx, ry, rz.
-Model octahedron(const Vec3& c, double rx, double ry, double rz) {
-  Model m;
-  m.name = "octahedron";
-  m.vertices = {{c.x + rx, c.y, c.z}, {c.x - rx, c.y, c.z}, {c.x, c.y + ry, c.z},
-                {c.x, c.y - ry, c.z}, {c.x, c.y, c.z + rz}, {c.x, c.y, c.z - rz}};
-  m.polygons = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  return m;
-}
-
 struct Agreement {
   int samples = 0, certified = 0, penumbra = 0;
 };
