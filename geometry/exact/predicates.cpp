@@ -3,9 +3,37 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <cmath>
+#include <optional>
+
 namespace umbra::geometry {
 
 using namespace detail;
+
+namespace {
+
+/// The sign of det(B, C, D), each vector a double or the rounded difference
+/// of two, where Shewchuk's orient3d bound clears it: (7ε + 56ε²) times the
+/// permanent, with ε = 2u so that it holds in any rounding mode (callers
+/// may run under an interval guard), raised to 2e-15. Tiny permanents
+/// (subnormal products) and non-finite ones: no answer.
+std::optional<Sign> certain_det_sign(const Vec3& b, const Vec3& c, const Vec3& d) {
+  const double m_x = c.y * d.z - c.z * d.y, m_y = c.z * d.x - c.x * d.z,
+               m_z = c.x * d.y - c.y * d.x;
+  const double value = b.x * m_x + b.y * m_y + b.z * m_z;
+  const double permanent = std::abs(b.x) * (std::abs(c.y * d.z) + std::abs(c.z * d.y)) +
+                           std::abs(b.y) * (std::abs(c.z * d.x) + std::abs(c.x * d.z)) +
+                           std::abs(b.z) * (std::abs(c.x * d.y) + std::abs(c.y * d.x));
+  const double bound = 2e-15 * permanent;
+  if (!(permanent > 1e-280) || !std::isfinite(bound)) return std::nullopt;
+  if (value > bound) return Sign::positive;
+  if (value < -bound) return Sign::negative;
+  return std::nullopt;
+}
+
+Vec3 slot_of(const HPoint& x, const Vec3& base) { return x.finite ? x.v - base : x.v; }
+
+}  // namespace
 
 Sign orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   // CGAL's statically filtered predicate: same answer, faster on the common path.
@@ -16,6 +44,11 @@ Sign orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 
 Sign orientation(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d) {
   if (b.finite && c.finite && d.finite) return orientation(a, b.v, c.v, d.v);
+  // A point at infinity (a sample ray's direction, a directional light):
+  // plain doubles first, as CGAL's static filter does for finite points.
+  if (const std::optional<Sign> sign =
+          certain_det_sign(slot_of(b, a), slot_of(c, a), slot_of(d, a)))
+    return *sign;
   return filtered_sign([&](auto tag) {
     using NT = typename decltype(tag)::type;
     return det(slot<NT>(b, a), slot<NT>(c, a), slot<NT>(d, a));

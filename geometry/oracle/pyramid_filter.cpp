@@ -101,7 +101,7 @@ HitSide::HitSide(const SamplePoint& sp) : sp_(&sp) {
 }
 
 Sign HitSide::of(const std::array<Vec3, 3>& t) const {
-  // Round to nearest (the default mode here), as Shewchuk's bound assumes.
+  // Shewchuk's bound with ε = 2u holds in any rounding mode.
   const Vec3 a = t[1] - t[0], b = t[2] - t[0], c = m_ - t[0];
   const double ab_x = a.y * b.z - a.z * b.y, ab_y = a.z * b.x - a.x * b.z,
                ab_z = a.x * b.y - a.y * b.x;
@@ -113,7 +113,7 @@ Sign HitSide::of(const std::array<Vec3, 3>& t) const {
   // The box term with room for its own roundings and for |n_k| above its
   // rounded products (a few ulps each).
   const double moved = (n_x * width_.x + n_y * width_.y + n_z * width_.z) * (1 + 1e-13);
-  const double bound = 1e-15 * permanent + moved;
+  const double bound = 2e-15 * permanent + moved;
   // Tiny magnitudes (subnormal products void the bound) or non-finite
   // ones: the exact predicate.
   if (std::isfinite(bound) && permanent > 1e-280) {

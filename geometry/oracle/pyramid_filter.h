@@ -51,8 +51,9 @@ class PyramidFilter {
 
 /// Which side of a triangle's plane H lies on, orientation(v0, v1, v2, H)
 /// as orientation_at_hit gives it, decided in plain doubles where that is
-/// certain: Shewchuk's orient3d bound (7ε + 56ε², raised to 1e-15, times
-/// the permanent) at a point m of the interval H's box, plus how far the
+/// certain: Shewchuk's orient3d bound (7ε + 56ε² with ε = 2u for any
+/// rounding mode, raised to 2e-15, times the permanent) at a point m of
+/// the interval H's box, plus how far the
 /// plane's function can move between m and any point of the box,
 /// Σ |n_k|·width_k (n's magnitudes bounded from the rounded differences).
 /// Only where |det| does not clear that does orientation_at_hit run: a

@@ -4,8 +4,10 @@
 #include <tests/support/rational_vec.h>
 #include <umbra/geometry/exact/predicates.h>
 
+#include <CGAL/FPU.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace umbra::geometry {
@@ -83,6 +85,30 @@ TEST(Orientation, NearlyCoplanarPointsNeedTheExactFallback) {
             reference_orientation(a, HPoint::point(b), HPoint::point(c), HPoint::point(d)));
   EXPECT_NE(orientation(a, b, c, d), Sign::zero);
   EXPECT_EQ(orientation(a, b, c, Vec3{0.3, 0.3, 0.5}), Sign::zero);
+}
+
+TEST(Orientation, DirectionsNearlyInThePlaneInAnyRoundingMode) {
+  // d at infinity, a combination of b − a and c − a nudged by 0 to 1e-6
+  // relative: the double filter must answer only where it is certain,
+  // also when called under an upward rounding guard (the interval code's).
+  Generator gen(20261207);
+  int near_zero = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double s = gen.scale();
+    const Vec3 a = gen.point(s, false), b = gen.point(s, false), c = gen.point(s, false);
+    const double nudge = i % 4 == 0 ? 0 : std::ldexp(gen.any(1), -20 - i % 33);
+    const Vec3 d = (b - a) * gen.any(1) + (c - a) * gen.any(1) + Vec3{nudge * s, 0, -nudge * s};
+    const HPoint bb = HPoint::point(b), cc = HPoint::point(c), dd = HPoint::at_infinity(d);
+    const Sign expected = reference_orientation(a, bb, cc, dd);
+    if (i % 2 == 0) {
+      ASSERT_EQ(orientation(a, bb, cc, dd), expected) << "case " << i;
+    } else {
+      CGAL::Protect_FPU_rounding<true> upward;
+      ASSERT_EQ(orientation(a, bb, cc, dd), expected) << "case " << i << " (upward)";
+    }
+    near_zero += nudge != 0 && std::abs(nudge) < 1e-12;
+  }
+  EXPECT_GT(near_zero, 5000);
 }
 
 TEST(OrientationAtSample, EqualsRationalArithmeticIncludingPointsOnTheHitPlane) {
