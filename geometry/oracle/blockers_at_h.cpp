@@ -20,9 +20,8 @@ bool strictly_apart(const Box& a, const Box& b) {
 
 void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
                   const SamplePoint& sp, const SurfaceHit& hit, std::span<const Vec3> light,
-                  const PyramidFilter& filter, TrianglesAtH& out) {
+                  const PyramidFilter& filter, const HitSide& side_of_h, TrianglesAtH& out) {
   out.clear();
-  const HitSide side_of_h(sp);
   const HPoint eye = at(sp.eye);
   const HPoint along = HPoint::at_infinity(sp.direction);
   const ShellTable& shells = index.shells();
@@ -45,8 +44,13 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
            static_cast<std::size_t>(&ft - poly.surface->triangles.data()) == hit.triangle);
       if (!in_hit_plane) side = side_of_h.of(v);
       if (side == Sign::zero) {
-        if (shells.shell_of[pi] != ShellTable::kNone)
-          out.shells_at_h.push_back(shells.shell_of[pi]);
+        // H may lie on this triangle's shell: keep_one_side keeps it whole,
+        // but where H lies inside the hit triangle with the whole light in
+        // front of it (below).
+        const auto at_shell = [&] {
+          if (shells.shell_of[pi] != ShellTable::kNone)
+            out.shells_at_h.push_back(shells.shell_of[pi]);
+        };
         // H in the triangle's plane: it blocks something only when its
         // closure holds H (elsewhere in its plane it projects to a line).
         // Which side of edge (p, q) H lies on, in the plane: with H = E +
@@ -56,7 +60,10 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
         // The ray runs in its plane: in the limit it blocks nothing, and
         // with H in its closure some corner projects onto the ray no later
         // than H, which first_hit reports as a grazing boundary.
-        if (nd == Sign::zero) continue;
+        if (nd == Sign::zero) {
+          at_shell();
+          continue;
+        }
         bool outside = false, on_polygon_edge = false;
         for (int e = 0; e < 3 && !outside; ++e) {
           const Sign edge_side = orientation(v[e], at(v[(e + 1) % 3]), eye, along) * nd;
@@ -66,21 +73,33 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
             on_polygon_edge = on_polygon_edge || is_polygon_edge(ft, e, size);
           }
         }
-        if (outside) continue;
+        if (outside) {
+          at_shell();
+          continue;
+        }
         t.touches = true;
         out.touching.push_back({t.v, poly.casts_shadows});
         out.touches_polygon_edge = out.touches_polygon_edge || on_polygon_edge;
         // In the limit it blocks only light beyond its plane (seen from
         // P): none when no light vertex lies strictly there.
-        std::size_t beyond = 0;
-        for (const Vec3& y : light) beyond += orientation(v[0], at(v[1]), at(v[2]), at(y)) == nd;
+        std::size_t beyond = 0, in_front = 0;
+        for (const Vec3& y : light) {
+          const Sign light_side = orientation(v[0], at(v[1]), at(v[2]), at(y));
+          beyond += light_side == nd;
+          in_front += light_side == -nd;
+        }
+        const bool inside = !t.through[0] && !t.through[1] && !t.through[2];
+        // Inside the hit triangle (a triangle polygon) with the whole light
+        // strictly in front: the segments to the light leave H on the eye's
+        // side of it, where the winding number is the eye's, so the shell
+        // stays open to keep_one_side.
+        if (!(in_hit_plane && size == 3 && inside && in_front == light.size())) at_shell();
         if (beyond == 0) continue;
         // A triangle polygon with H inside it (no edge through H) and the
         // whole light beyond its plane blocks all of it: P, just before H,
         // sees every light point through it.
         out.blocks_all =
-            out.blocks_all || (poly.casts_shadows && size == 3 && beyond == light.size() &&
-                               !t.through[0] && !t.through[1] && !t.through[2]);
+            out.blocks_all || (poly.casts_shadows && size == 3 && beyond == light.size() && inside);
       }
       if (poly.casts_shadows) {
         out.blockers.push_back(t);

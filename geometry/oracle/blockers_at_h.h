@@ -58,10 +58,11 @@ struct TrianglesAtH {
 };
 
 /// Fills `out` (cleared first) from the candidate polygons (indices into
-/// the index's polygons, sorted) for the light with vertices `light`.
+/// the index's polygons, sorted) for the light with vertices `light`;
+/// `side_of_h` is `sp`'s.
 void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
                   const SamplePoint& sp, const SurfaceHit& hit, std::span<const Vec3> light,
-                  const PyramidFilter& filter, TrianglesAtH& out);
+                  const PyramidFilter& filter, const HitSide& side_of_h, TrianglesAtH& out);
 
 /// Half a closed shell blocks what all of it blocks (docs/soft-shadows.md):
 /// along a segment from H to a light point y that crosses a 2-chain C

@@ -95,6 +95,8 @@ HitSide::HitSide(const SamplePoint& sp) : sp_(&sp) {
     h = interval_hit(sp);
     width_ = {h.x.sup() - h.x.inf(), h.y.sup() - h.y.inf(), h.z.sup() - h.z.inf()};
   }
+  box_.extend(Vec3{h.x.inf(), h.y.inf(), h.z.inf()});
+  box_.extend(Vec3{h.x.sup(), h.y.sup(), h.z.sup()});
   // Any point of the box will do; the true H lies within width_ of it.
   m_ = {std::clamp(mid(h.x), h.x.inf(), h.x.sup()), std::clamp(mid(h.y), h.y.inf(), h.y.sup()),
         std::clamp(mid(h.z), h.z.inf(), h.z.sup())};

@@ -63,10 +63,13 @@ class HitSide {
  public:
   explicit HitSide(const SamplePoint& sp);
   Sign of(const std::array<Vec3, 3>& t) const;
+  /// A box that holds H: the interval H's.
+  const Box& h_box() const { return box_; }
 
  private:
   const SamplePoint* sp_;
   Vec3 m_, width_;
+  Box box_;
 };
 
 }  // namespace umbra::geometry::soft

@@ -137,10 +137,11 @@ double exact_piece_fraction(const LightPiece& piece, const P3& h, const P3& d,
                             const std::vector<std::vector<const BlockerTriangle*>>& kept);
 
 PieceResult piece_fraction(const LightPiece& piece, LazyH& h, const Vec3& d, const SamplePoint& sp,
-                           const TrianglesAtH& triangles, FractionPrecision precision) {
+                           const HitSide& side_of_h, const TrianglesAtH& triangles,
+                           FractionPrecision precision) {
   PieceResult result;
   const std::array<Vec3, 3>& f = piece.fan.front();
-  const Sign h_side = orientation_at_hit(f[0], at(f[1]), at(f[2]), sp);
+  const Sign h_side = side_of_h.of(f);
   if (h_side == Sign::zero) {
     result.in_plane = true;  // counted apart; V taken as 1 there
     return result;
@@ -315,13 +316,29 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   double magnitude = index.magnitude();
   for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
   const PyramidFilter filter(pieces, sp, magnitude);
+  const HitSide side_of_h(sp);
   thread_local std::vector<std::uint32_t> candidates;  // per-thread scratch: every sample asks
+  thread_local TrianglesAtH triangles;
   candidates.clear();
-  index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
+  // The hit polygon first, when it is a casting triangle: holding H inside
+  // it with the whole light beyond its plane (a closed model's side turned
+  // away from the light), it alone blocks all of the light, and only the
+  // polygons whose box holds H matter (for the boundary flag), not the
+  // pyramid's hundreds.
+  const IndexedPolygon& hit_polygon = index.polygons()[hit.polygon];
+  bool all_blocked = false;
+  if (hit_polygon.casts_shadows && index.size_of(hit_polygon) == 3) {
+    candidates.push_back(hit.polygon);
+    triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, triangles);
+    all_blocked = triangles.blocks_all;
+    candidates.clear();
+  }
+  if (all_blocked)
+    index.query_box(side_of_h.h_box(), 0.0, candidates);
+  else
+    index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
   std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
-
-  thread_local TrianglesAtH triangles;  // per-thread scratch, as the candidates
-  triangles_at(index, candidates, sp, hit, light.vertices, filter, triangles);
+  triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, triangles);
   Box light_box;
   for (const Vec3& v : light.vertices) light_box.extend(v);
   keep_one_side(index.shells(), triangles, sp, light_box, filter);
@@ -343,11 +360,10 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   for (const LightPiece& piece : pieces) {
     PieceResult r;
     if (triangles.empty() || triangles.blocks_all) {
-      r.in_plane = orientation_at_hit(piece.fan[0][0], at(piece.fan[0][1]), at(piece.fan[0][2]),
-                                      sp) == Sign::zero;
+      r.in_plane = side_of_h.of(piece.fan[0]) == Sign::zero;
       r.fraction = triangles.blocks_all && !r.in_plane ? 0 : 1;  // in its plane: taken as 1
     } else {
-      r = piece_fraction(piece, h, ray.direction, sp, triangles, precision);
+      r = piece_fraction(piece, h, ray.direction, sp, side_of_h, triangles, precision);
     }
     in_plane = in_plane || r.in_plane;
     answer.certified = answer.certified || r.certified;
