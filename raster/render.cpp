@@ -59,9 +59,7 @@ Frame render_linear(const geometry::Scene& scene, const RenderOptions& options,
     s.non_manifold_edges += t.non_manifold_edges;
     s.degenerate_polygons += t.degenerate_polygons;
   }
-  std::vector<const std::vector<geometry::PolygonSurface>*> surfaces;
-  for (const geometry::ModelTables& model : tables) surfaces.push_back(&model.surfaces);
-  const geometry::SceneIndex index(scene, surfaces);
+  const geometry::SceneIndex index(scene, tables);
   if (options.rows && (options.rows->begin < 0 || options.rows->end > scene.camera.height ||
                        options.rows->size() < 0))
     throw std::invalid_argument("render: rows " + std::to_string(options.rows->begin) + " to " +

@@ -384,9 +384,7 @@ FootprintTables::FootprintTables(const Scene& input, std::vector<std::uint32_t> 
     for (Light& l : scene.lights) l.light_end.reset();
   // Every model's: the casters' for their volumes, the receivers' surfaces.
   tables = model_tables(scene, threads);
-  std::vector<const std::vector<PolygonSurface>*> surfaces(tables.size());
-  for (std::size_t m = 0; m < tables.size(); ++m) surfaces[m] = &tables[m].surfaces;
-  index = std::make_unique<SceneIndex>(scene, surfaces);
+  index = std::make_unique<SceneIndex>(scene, tables);
   tinted = has_transmittance(scene);
 }
 

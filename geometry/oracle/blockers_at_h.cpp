@@ -1,8 +1,6 @@
 #include <umbra/geometry/oracle/blockers_at_h.h>
-#include <umbra/geometry/oracle/interval_clip.h>
 
 #include <algorithm>
-#include <optional>
 #include <utility>
 
 namespace umbra::geometry::soft {
@@ -114,7 +112,7 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
 }
 
 void keep_one_side(const ShellTable& table, TrianglesAtH& triangles, const SamplePoint& sp,
-                   const Box& light_box, const PyramidFilter& filter) {
+                   const HitSide& side_of_h, const Box& light_box, const PyramidFilter& filter) {
   // (shell, its blocker's place), by shell: a shell's polygons are
   // single triangles.
   thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> members;
@@ -127,17 +125,8 @@ void keep_one_side(const ShellTable& table, TrianglesAtH& triangles, const Sampl
   std::sort(members.begin(), members.end());
   Box eye_box;
   eye_box.extend(sp.eye);
-  std::optional<Box> segment;  // the eye and the interval H: made when a cap asks
-  const auto segment_box = [&]() -> const Box& {
-    if (!segment) {
-      CGAL::Protect_FPU_rounding<true> guard;
-      const soft::IPoint h = soft::interval_hit(sp);
-      segment.emplace(eye_box);
-      segment->extend(Vec3{h.x.inf(), h.y.inf(), h.z.inf()});
-      segment->extend(Vec3{h.x.sup(), h.y.sup(), h.z.sup()});
-    }
-    return *segment;
-  };
+  Box segment = eye_box;  // the eye and the interval H
+  segment.extend(side_of_h.h_box());
   thread_local std::vector<std::uint8_t> drop;
   drop.assign(triangles.blockers.size(), 0);
   bool dropped = false;
@@ -157,7 +146,7 @@ void keep_one_side(const ShellTable& table, TrianglesAtH& triangles, const Sampl
                  strictly_apart(light_box, shell.box) &&
                  static_cast<std::size_t>(positive + negative) == end - r;
     if (apart && !shell.cap.empty())
-      apart = filter.misses(shell.cap) && strictly_apart(segment_box(), shell.cap);
+      apart = filter.misses(shell.cap) && strictly_apart(segment, shell.cap);
     if (apart) {
       const Sign gone = positive >= negative ? Sign::positive : Sign::negative;
       for (std::size_t k = r; k < end; ++k)

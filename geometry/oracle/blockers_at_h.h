@@ -79,6 +79,6 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
 /// side is dropped, shell by shell, in both the certified and exact paths.
 /// `sp`'s hit must be its ray's first hit, as visible_fraction requires.
 void keep_one_side(const ShellTable& table, TrianglesAtH& triangles, const SamplePoint& sp,
-                   const Box& light_box, const PyramidFilter& filter);
+                   const HitSide& side_of_h, const Box& light_box, const PyramidFilter& filter);
 
 }  // namespace umbra::geometry::soft

@@ -14,7 +14,8 @@ std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 
 }  // namespace
 
-ShellTable shell_table(const Scene& scene, std::span<const IndexedPolygon> polygons) {
+ShellTable shell_table(const Scene& scene, std::span<const IndexedPolygon> polygons,
+                       std::span<const ModelEdges* const> edges_of) {
   ShellTable table;
   table.shell_of.assign(polygons.size(), ShellTable::kNone);
   for (std::size_t first = 0; first < polygons.size();) {
@@ -35,7 +36,9 @@ ShellTable shell_table(const Scene& scene, std::span<const IndexedPolygon> polyg
     first = end;
     if (!any) continue;
     // Shells: members joined through the edges they share.
-    const ModelEdges edges = model_edges(model);
+    ModelEdges made;
+    if (m >= edges_of.size() || edges_of[m] == nullptr) made = model_edges(model);
+    const ModelEdges& edges = m < edges_of.size() && edges_of[m] ? *edges_of[m] : made;
     std::vector<std::uint32_t> parent(model.polygons.size());
     std::iota(parent.begin(), parent.end(), 0u);
     for (std::size_t e = 0; e < edges.edges.size(); ++e) {

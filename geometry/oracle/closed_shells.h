@@ -14,6 +14,7 @@
 // as a chain, and a degenerate one blocks nothing.
 #include <umbra/geometry/box.h>
 #include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/model_edges.h>
 
 #include <cstdint>
 #include <span>
@@ -36,7 +37,9 @@ struct ShellTable {
 };
 
 /// The shells of the casting triangles among `polygons` (a SceneIndex's,
-/// which lists each model's polygons together, in model order).
-ShellTable shell_table(const Scene& scene, std::span<const IndexedPolygon> polygons);
+/// which lists each model's polygons together, in model order); model m's
+/// edges are `*edges[m]` where given (not null), else made here.
+ShellTable shell_table(const Scene& scene, std::span<const IndexedPolygon> polygons,
+                       std::span<const ModelEdges* const> edges = {});
 
 }  // namespace umbra::geometry

@@ -12,10 +12,29 @@ double diameter(const Interval& v) { return v.sup() - v.inf(); }
 
 }  // namespace
 
+namespace {
+
+/// H's interval (interval_hit) as the box HitSide keeps of it.
+Box interval_box(const SamplePoint& sp) {
+  CGAL::Protect_FPU_rounding<true> guard;  // upwards, as interval_hit needs
+  const IPoint h = interval_hit(sp);
+  Box box;
+  box.extend(Vec3{h.x.inf(), h.y.inf(), h.z.inf()});
+  box.extend(Vec3{h.x.sup(), h.y.sup(), h.z.sup()});
+  return box;
+}
+
+}  // namespace
+
 PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp,
+                             double magnitude)
+    : PyramidFilter(pieces, interval_box(sp), magnitude) {}
+
+PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box,
                              double magnitude) {
   CGAL::Protect_FPU_rounding<true> guard;  // upwards: every bound below rounds up
-  const IPoint h = interval_hit(sp);
+  const IPoint h{Interval(h_box.lo.x, h_box.hi.x), Interval(h_box.lo.y, h_box.hi.y),
+                 Interval(h_box.lo.z, h_box.hi.z)};
   // Outside is where s·(N·x − N·o) < 0 for the plane's normal N through o,
   // s the sign of the inside reference `in`.
   const auto plane = [&](const IPoint& normal, const IPoint& origin, const IPoint& in,
@@ -88,18 +107,14 @@ bool PyramidFilter::misses(const Box& b) const {
   return true;
 }
 
-HitSide::HitSide(const SamplePoint& sp) : sp_(&sp) {
-  IPoint h;
+HitSide::HitSide(const SamplePoint& sp) : sp_(&sp), box_(interval_box(sp)) {
   {
     CGAL::Protect_FPU_rounding<true> guard;  // upwards: the widths round up
-    h = interval_hit(sp);
-    width_ = {h.x.sup() - h.x.inf(), h.y.sup() - h.y.inf(), h.z.sup() - h.z.inf()};
+    width_ = box_.hi - box_.lo;
   }
-  box_.extend(Vec3{h.x.inf(), h.y.inf(), h.z.inf()});
-  box_.extend(Vec3{h.x.sup(), h.y.sup(), h.z.sup()});
   // Any point of the box will do; the true H lies within width_ of it.
-  m_ = {std::clamp(mid(h.x), h.x.inf(), h.x.sup()), std::clamp(mid(h.y), h.y.inf(), h.y.sup()),
-        std::clamp(mid(h.z), h.z.inf(), h.z.sup())};
+  const auto mid_of = [](double lo, double hi) { return std::clamp(lo / 2 + hi / 2, lo, hi); };
+  m_ = {mid_of(box_.lo.x, box_.hi.x), mid_of(box_.lo.y, box_.hi.y), mid_of(box_.lo.z, box_.hi.z)};
 }
 
 Sign HitSide::of(const std::array<Vec3, 3>& t) const {

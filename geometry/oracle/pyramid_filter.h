@@ -29,6 +29,9 @@ class PyramidFilter {
   /// The pyramids from H (the hit of `sp`) over `pieces`; `magnitude`
   /// bounds the absolute value of every coordinate that will be tested.
   PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp, double magnitude);
+  /// The same from a box known to hold H (HitSide::h_box: made once a
+  /// sample for both).
+  PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box, double magnitude);
 
   /// True only when the triangle certainly misses every piece's pyramid.
   bool misses(const std::array<Vec3, 3>& t) const;

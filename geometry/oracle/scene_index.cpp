@@ -8,13 +8,16 @@ namespace umbra::geometry {
 
 SceneIndex::SceneIndex(const Scene& scene) : SceneIndex(scene, {}) {}
 
-SceneIndex::SceneIndex(const Scene& scene,
-                       std::span<const std::vector<PolygonSurface>* const> surfaces)
+SceneIndex::SceneIndex(const Scene& scene, std::span<const ModelTables> tables)
     : scene_(&scene), owned_(scene.models.size()) {
+  shells_->edges.assign(scene.models.size(), nullptr);
   for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
     const Model& model = scene.models[m];
-    const std::vector<PolygonSurface>* given = m < surfaces.size() ? surfaces[m] : nullptr;
-    if (given == nullptr || given->size() != model.polygons.size()) {
+    const std::vector<PolygonSurface>* given = nullptr;
+    if (m < tables.size() && tables[m].surfaces.size() == model.polygons.size()) {
+      given = &tables[m].surfaces;
+      shells_->edges[m] = &tables[m].edges;
+    } else {
       owned_[m] = model_surfaces(model);  // filled before any pointer into it is taken
       given = &owned_[m];
     }
@@ -46,7 +49,8 @@ const Bvh* SceneIndex::tree() const {
 
 const ShellTable& SceneIndex::shells() const {
   std::call_once(shells_->once, [this] {
-    shells_->table = std::make_shared<const ShellTable>(shell_table(*scene_, polygons_));
+    shells_->table =
+        std::make_shared<const ShellTable>(shell_table(*scene_, polygons_, shells_->edges));
   });
   return *shells_->table;
 }

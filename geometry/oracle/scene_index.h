@@ -8,6 +8,7 @@
 #include <umbra/geometry/exact/polygon_surface.h>
 #include <umbra/geometry/oracle/bvh.h>
 #include <umbra/geometry/scene.h>
+#include <umbra/geometry/volumes/model_tables.h>
 
 #include <atomic>
 #include <memory>
@@ -32,11 +33,13 @@ class SceneIndex {
  public:
   /// Keeps a reference to `scene`, which must outlive the index.
   explicit SceneIndex(const Scene& scene);
-  /// The same with model m's surfaces taken from `*surfaces[m]`
-  /// (model_surfaces of it, e.g. a ModelTables'), which must outlive the
-  /// index; a null or short entry is computed here. The renderer has them at
-  /// hand: making them twice was ~15 % of a 1-light refined_elephant frame.
-  SceneIndex(const Scene& scene, std::span<const std::vector<PolygonSurface>* const> surfaces);
+  /// The same with model m's surfaces, and the edges its shells are made
+  /// from, taken from `tables[m]` (model_tables.h), which must outlive the
+  /// index; a missing entry, or one whose surfaces do not match the model,
+  /// is computed here. The renderer has them at hand: making the surfaces
+  /// twice was ~15 % of a 1-light refined_elephant frame, the edges ~1 % of
+  /// an area-light one.
+  SceneIndex(const Scene& scene, std::span<const ModelTables> tables);
 
   const Scene& scene() const { return *scene_; }
   std::span<const IndexedPolygon> polygons() const { return polygons_; }
@@ -96,6 +99,7 @@ class SceneIndex {
   struct LazyShells {
     std::once_flag once;
     std::shared_ptr<const ShellTable> table;
+    std::vector<const ModelEdges*> edges;  ///< per model, the caller's; null: made then
   };
   std::unique_ptr<LazyShells> shells_ = std::make_unique<LazyShells>();
   Box bounds_;

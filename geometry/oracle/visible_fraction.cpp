@@ -315,8 +315,8 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   // light's plane), so touching and flat-seam triangles are all seen.
   double magnitude = index.magnitude();
   for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
-  const PyramidFilter filter(pieces, sp, magnitude);
   const HitSide side_of_h(sp);
+  const PyramidFilter filter(pieces, side_of_h.h_box(), magnitude);
   thread_local std::vector<std::uint32_t> candidates;  // per-thread scratch: every sample asks
   thread_local TrianglesAtH triangles;
   candidates.clear();
@@ -341,7 +341,7 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, triangles);
   Box light_box;
   for (const Vec3& v : light.vertices) light_box.extend(v);
-  keep_one_side(index.shells(), triangles, sp, light_box, filter);
+  keep_one_side(index.shells(), triangles, sp, side_of_h, light_box, filter);
   // H = eye + t·d exactly, t = n·(a − eye) / n·d on the hit triangle's
   // plane: made only when something may block.
   const auto exact_h = [&] {
