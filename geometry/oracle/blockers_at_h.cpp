@@ -18,7 +18,8 @@ bool strictly_apart(const Box& a, const Box& b) {
 
 void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
                   const SamplePoint& sp, const SurfaceHit& hit, std::span<const Vec3> light,
-                  const PyramidFilter& filter, const HitSide& side_of_h, TrianglesAtH& out) {
+                  const PyramidFilter& filter, const HitSide& side_of_h, const HitPlane& hit_plane,
+                  TrianglesAtH& out) {
   out.clear();
   const HPoint eye = at(sp.eye);
   const HPoint along = HPoint::at_infinity(sp.direction);
@@ -36,11 +37,22 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
       const std::array<Vec3, 3>& v = t.v;
       // H lies in the plane of the hit's fan triangle, and of all of a
       // planar hit polygon's, by construction: no exact test needed.
-      const bool in_hit_plane =
+      const bool is_hit_triangle =
           pi == hit.polygon &&
-          (poly.surface->shape == PolygonShape::planar ||
-           static_cast<std::size_t>(&ft - poly.surface->triangles.data()) == hit.triangle);
+          static_cast<std::size_t>(&ft - poly.surface->triangles.data()) == hit.triangle;
+      const bool in_hit_plane =
+          pi == hit.polygon && (poly.surface->shape == PolygonShape::planar || is_hit_triangle);
       if (!in_hit_plane) side = side_of_h.of(v);
+      if (side != Sign::zero) {
+        // Off H's plane: a segment from H to a light point meets it only
+        // when the point lies strictly across its plane, and then only
+        // in front of the hit plane when the light is wholly there.
+        if (hit_plane.behind(v)) continue;
+        bool across = false;
+        for (std::size_t k = 0; k < light.size() && !across; ++k)
+          across = orientation(v[0], at(v[1]), at(v[2]), at(light[k])) == -side;
+        if (!across) continue;
+      }
       if (side == Sign::zero) {
         // H may lie on this triangle's shell: keep_one_side keeps it whole,
         // but where H lies inside the hit triangle with the whole light in
@@ -81,8 +93,11 @@ void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candid
         // In the limit it blocks only light beyond its plane (seen from
         // P): none when no light vertex lies strictly there.
         std::size_t beyond = 0, in_front = 0;
-        for (const Vec3& y : light) {
-          const Sign light_side = orientation(v[0], at(v[1]), at(v[2]), at(y));
+        for (std::size_t k = 0; k < light.size(); ++k) {
+          // The hit triangle's are known (the same corners, in order).
+          const Sign light_side = is_hit_triangle
+                                      ? hit_plane.light_sides[k]
+                                      : orientation(v[0], at(v[1]), at(v[2]), at(light[k]));
           beyond += light_side == nd;
           in_front += light_side == -nd;
         }

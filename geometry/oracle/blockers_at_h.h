@@ -59,10 +59,12 @@ struct TrianglesAtH {
 
 /// Fills `out` (cleared first) from the candidate polygons (indices into
 /// the index's polygons, sorted) for the light with vertices `light`;
-/// `side_of_h` is `sp`'s.
+/// `side_of_h` and `hit_plane` are `sp`'s (a triangle off H's plane wholly
+/// behind the hit plane is left out: it blocks nothing).
 void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,
                   const SamplePoint& sp, const SurfaceHit& hit, std::span<const Vec3> light,
-                  const PyramidFilter& filter, const HitSide& side_of_h, TrianglesAtH& out);
+                  const PyramidFilter& filter, const HitSide& side_of_h, const HitPlane& hit_plane,
+                  TrianglesAtH& out);
 
 /// Half a closed shell blocks what all of it blocks (docs/soft-shadows.md):
 /// along a segment from H to a light point y that crosses a 2-chain C

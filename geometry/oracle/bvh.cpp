@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace umbra::geometry {
 
@@ -17,6 +18,12 @@ Bvh::Bvh(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
     for (const Box& b : boxes_) centres.push_back(b.centre());
     nodes_.reserve(2 * boxes_.size());
     build(0, static_cast<std::uint32_t>(boxes_.size()), centres);
+    // Leaves' boxes in leaf order: a query reads each leaf's items side by
+    // side, not scattered over the input's order.
+    std::vector<Box> ordered;
+    ordered.reserve(boxes_.size());
+    for (const std::uint32_t i : order_) ordered.push_back(boxes_[i]);
+    boxes_ = std::move(ordered);
   }
 }
 

@@ -39,7 +39,7 @@ class Bvh {
       if (!keep(node.box)) continue;
       if (node.count > 0) {
         for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-          if (keep(boxes_[order_[i]])) out.push_back(order_[i]);
+          if (keep(boxes_[i])) out.push_back(order_[i]);
       } else {
         const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
         stack[top++] = self + 1;
@@ -68,7 +68,7 @@ class Bvh {
   /// `centres[i]` is boxes_[i].centre(), computed once for the whole build.
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, const std::vector<Vec3>& centres);
 
-  std::vector<Box> boxes_;
+  std::vector<Box> boxes_;  ///< after the build, item order_[i]'s box is boxes_[i]
   std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
 };

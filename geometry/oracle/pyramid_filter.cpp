@@ -10,10 +10,6 @@ namespace {
 /// An interval's diameter: a bound on its midpoint's error.
 double diameter(const Interval& v) { return v.sup() - v.inf(); }
 
-}  // namespace
-
-namespace {
-
 /// H's interval (interval_hit) as the box HitSide keeps of it.
 Box interval_box(const SamplePoint& sp) {
   CGAL::Protect_FPU_rounding<true> guard;  // upwards, as interval_hit needs
@@ -24,65 +20,116 @@ Box interval_box(const SamplePoint& sp) {
   return box;
 }
 
+/// The plane with normal N through o, outside where s·(N·x − N·o) < 0 for
+/// s the sign at the inside reference `in`; none when that sign is not
+/// certain (the filter then keeps more). Under upward rounding: every
+/// bound rounds up.
+std::optional<FilterPlane> filter_plane(const IPoint& normal, const IPoint& origin,
+                                        const IPoint& in, double magnitude) {
+  const Interval c = dot(normal, origin);
+  const Interval inside = dot(normal, in) - c;
+  double s = 0;
+  if (inside.inf() > 0) s = 1;
+  if (inside.sup() < 0) s = -1;
+  if (s == 0) return std::nullopt;
+  FilterPlane p{{s * mid(normal.x), s * mid(normal.y), s * mid(normal.z)}, s * mid(c), 0};
+  if (!std::isfinite(p.n.x) || !std::isfinite(p.n.y) || !std::isfinite(p.n.z) ||
+      !std::isfinite(p.c))
+    return std::nullopt;
+  const double gamma = 5e-16;  // > γ₄ = 4u/(1 − 4u), u = 2⁻⁵³
+  p.margin =
+      2 *
+      ((diameter(normal.x) + diameter(normal.y) + diameter(normal.z)) * magnitude + diameter(c) +
+       gamma * ((std::abs(p.n.x) + std::abs(p.n.y) + std::abs(p.n.z)) * magnitude + std::abs(p.c)));
+  if (!std::isfinite(p.margin)) return std::nullopt;
+  return p;
+}
+
 }  // namespace
 
-PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp,
-                             double magnitude)
-    : PyramidFilter(pieces, interval_box(sp), magnitude) {}
+void HitPlane::assign(const std::array<Vec3, 3>& triangle, std::span<const Vec3> light_vertices,
+                      double magnitude_bound) {
+  if (triangle == t && magnitude_bound == magnitude &&
+      std::equal(light.begin(), light.end(), light_vertices.begin(), light_vertices.end()))
+    return;
+  t = triangle;
+  magnitude = magnitude_bound;
+  light.assign(light_vertices.begin(), light_vertices.end());
+  light_sides.clear();
+  for (const Vec3& y : light) light_sides.push_back(orientation(t[0], t[1], t[2], y));
+  front = light_sides.empty() ? Sign::zero : light_sides.front();
+  for (const Sign s : light_sides)
+    if (s != front) front = Sign::zero;
+  filter_plane.reset();
+  if (front != Sign::zero) {
+    // Through the triangle's exact corners (H lies in its plane), the
+    // light on its inner side: any light vertex will do as reference.
+    CGAL::Protect_FPU_rounding<true> guard;
+    const IPoint a = ip(t[0]);
+    filter_plane =
+        soft::filter_plane(cross(ip(t[1]) - a, ip(t[2]) - a), a, ip(light.front()), magnitude);
+  }
+}
 
-PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box,
+bool HitPlane::behind(const std::array<Vec3, 3>& v) const {
+  if (front == Sign::zero) return false;
+  for (const Vec3& x : v)
+    if (orientation(t[0], t[1], t[2], x) == front) return false;
+  return true;
+}
+
+PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp,
                              double magnitude) {
+  assign(pieces, interval_box(sp), magnitude, nullptr);
+}
+
+PyramidFilter::PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box, double magnitude,
+                             const HitPlane* hit_plane) {
+  assign(pieces, h_box, magnitude, hit_plane);
+}
+
+void PyramidFilter::assign(std::span<const LightPiece> pieces, const Box& h_box, double magnitude,
+                           const HitPlane* hit_plane) {
+  planes_.clear();
+  ends_.clear();
   CGAL::Protect_FPU_rounding<true> guard;  // upwards: every bound below rounds up
   const IPoint h{Interval(h_box.lo.x, h_box.hi.x), Interval(h_box.lo.y, h_box.hi.y),
                  Interval(h_box.lo.z, h_box.hi.z)};
-  // Outside is where s·(N·x − N·o) < 0 for the plane's normal N through o,
-  // s the sign of the inside reference `in`.
-  const auto plane = [&](const IPoint& normal, const IPoint& origin, const IPoint& in,
-                         std::vector<Plane>& out) {
-    const Interval c = dot(normal, origin);
-    const Interval inside = dot(normal, in) - c;
-    double s = 0;
-    if (inside.inf() > 0) s = 1;
-    if (inside.sup() < 0) s = -1;
-    if (s == 0) return;  // not certain: no plane, the filter keeps more
-    Plane p{{s * mid(normal.x), s * mid(normal.y), s * mid(normal.z)}, s * mid(c), 0};
-    if (!std::isfinite(p.n.x) || !std::isfinite(p.n.y) || !std::isfinite(p.n.z) ||
-        !std::isfinite(p.c))
-      return;
-    const double gamma = 5e-16;  // > γ₄ = 4u/(1 − 4u), u = 2⁻⁵³
-    p.margin = 2 * ((diameter(normal.x) + diameter(normal.y) + diameter(normal.z)) * magnitude +
-                    diameter(c) +
-                    gamma * ((std::abs(p.n.x) + std::abs(p.n.y) + std::abs(p.n.z)) * magnitude +
-                             std::abs(p.c)));
-    if (std::isfinite(p.margin)) out.push_back(p);
+  reach_ = h_box;
+  for (const LightPiece& piece : pieces)
+    for (const Vec3& c : piece.hull) reach_.extend(c);
+  const auto add = [&](const std::optional<FilterPlane>& p) {
+    if (p) planes_.push_back(*p);
   };
   for (const LightPiece& piece : pieces) {
-    std::vector<Plane> planes;
     const std::size_t m = piece.hull.size();
     for (std::size_t i = 0; i < m; ++i) {
       const IPoint p = ip(piece.hull[i]), q = ip(piece.hull[(i + 1) % m]);
-      plane(cross(p - h, q - h), h, ip(piece.hull[(i + 2) % m]), planes);
+      add(filter_plane(cross(p - h, q - h), h, ip(piece.hull[(i + 2) % m]), magnitude));
     }
     const std::array<Vec3, 3>& f = piece.fan.front();
     const IPoint f0 = ip(f[0]);
-    plane(cross(ip(f[1]) - f0, ip(f[2]) - f0), f0, h, planes);
-    pyramids_.push_back(std::move(planes));
+    add(filter_plane(cross(ip(f[1]) - f0, ip(f[2]) - f0), f0, h, magnitude));
+    // The whole light lies in front of the hit plane through H: a side of
+    // every piece's pyramid too.
+    if (hit_plane && hit_plane->magnitude == magnitude) add(hit_plane->filter_plane);
+    ends_.push_back(static_cast<std::uint32_t>(planes_.size()));
   }
 }
 
 template <std::size_t K>
 bool PyramidFilter::all_outside(const std::array<Vec3, K>& corners) const {
-  for (const std::vector<Plane>& planes : pyramids_) {
+  std::uint32_t begin = 0;
+  for (const std::uint32_t end : ends_) {
     bool missed = false;
-    for (const Plane& p : planes) {
+    for (std::uint32_t i = begin; i < end && !missed; ++i) {
+      const FilterPlane& p = planes_[i];
       bool out = true;
       for (const Vec3& x : corners) out = out && p.value(x) < -p.margin;
-      if (out) {
-        missed = true;
-        break;
-      }
+      missed = out;
     }
     if (!missed) return false;
+    begin = end;
   }
   return true;
 }
@@ -90,19 +137,22 @@ bool PyramidFilter::all_outside(const std::array<Vec3, K>& corners) const {
 bool PyramidFilter::misses(const std::array<Vec3, 3>& t) const { return all_outside(t); }
 
 bool PyramidFilter::misses(const Box& b) const {
+  // Exact comparisons of doubles: the pyramids lie in reach_.
+  for (int k = 0; k < 3; ++k)
+    if (b.hi[k] < reach_.lo[k] || reach_.hi[k] < b.lo[k]) return true;
   // All eight corners outside a plane when the one farthest along its
   // normal is: that corner's value is computed as every corner's would be.
-  for (const std::vector<Plane>& planes : pyramids_) {
+  std::uint32_t begin = 0;
+  for (const std::uint32_t end : ends_) {
     bool missed = false;
-    for (const Plane& p : planes) {
+    for (std::uint32_t i = begin; i < end && !missed; ++i) {
+      const FilterPlane& p = planes_[i];
       const Vec3 far{p.n.x > 0 ? b.hi.x : b.lo.x, p.n.y > 0 ? b.hi.y : b.lo.y,
                      p.n.z > 0 ? b.hi.z : b.lo.z};
-      if (p.value(far) < -p.margin) {
-        missed = true;
-        break;
-      }
+      missed = p.value(far) < -p.margin;
     }
     if (!missed) return false;
+    begin = end;
   }
   return true;
 }

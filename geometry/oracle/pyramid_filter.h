@@ -19,37 +19,79 @@
 #include <umbra/geometry/oracle/area_light_pieces.h>
 
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 namespace umbra::geometry::soft {
 
+/// A plane of the filter in doubles, f(x) = n·x − c: a point x within the
+/// magnitude it was made for is certainly on its outer side when f(x) <
+/// −margin.
+struct FilterPlane {
+  Vec3 n;
+  double c = 0, margin = 0;
+  double value(const Vec3& x) const { return n.x * x.x + n.y * x.y + n.z * x.z - c; }
+};
+
+/// The hit triangle (a, b, c; H lies in its plane) as the light's vertices
+/// see it: `light_sides[k]` is orientation(a, b, c, light vertex k), and
+/// `front` their common sign when all are strictly on one side, else zero;
+/// then `filter_plane` is the plane as the filter takes it (when its side
+/// is certain in intervals).
+struct HitPlane {
+  std::array<Vec3, 3> t;
+  std::vector<Vec3> light;
+  std::vector<Sign> light_sides;
+  Sign front = Sign::zero;
+  std::optional<FilterPlane> filter_plane;
+  double magnitude = 0;
+
+  /// Remade for another sample (`this` is per-thread scratch), unless the
+  /// triangle, the light and the magnitude are the last sample's (a
+  /// floor's samples hit the same few triangles).
+  void assign(const std::array<Vec3, 3>& triangle, std::span<const Vec3> light_vertices,
+              double magnitude_bound);
+  /// Whether the closed halfspace behind the plane holds all of `v`: then
+  /// no segment from H to the light meets `v` but at H (which a triangle
+  /// with H off its plane does not hold). False when `front` is zero.
+  bool behind(const std::array<Vec3, 3>& v) const;
+};
+
 class PyramidFilter {
  public:
+  PyramidFilter() = default;
   /// The pyramids from H (the hit of `sp`) over `pieces`; `magnitude`
   /// bounds the absolute value of every coordinate that will be tested.
   PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp, double magnitude);
   /// The same from a box known to hold H (HitSide::h_box: made once a
-  /// sample for both).
-  PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box, double magnitude);
+  /// sample for both), with the hit triangle's plane as one more side of
+  /// each pyramid when `hit_plane` has one for `magnitude`.
+  PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box, double magnitude,
+                const HitPlane* hit_plane = nullptr);
+  /// Remade in place, as the constructor makes it: a sample's filter in
+  /// per-thread scratch costs no allocation.
+  void assign(std::span<const LightPiece> pieces, const Box& h_box, double magnitude,
+              const HitPlane* hit_plane);
 
   /// True only when the triangle certainly misses every piece's pyramid.
   bool misses(const std::array<Vec3, 3>& t) const;
-  /// True only when the box certainly misses every piece's pyramid.
+  /// True only when the box certainly misses every piece's pyramid: apart
+  /// from the box of H's and the light's (which holds every pyramid), or
+  /// outside a plane.
   bool misses(const Box& b) const;
 
  private:
-  struct Plane {
-    Vec3 n;
-    double c = 0, margin = 0;
-    double value(const Vec3& x) const { return n.x * x.x + n.y * x.y + n.z * x.z - c; }
-  };
   template <std::size_t K>
   bool all_outside(const std::array<Vec3, K>& corners) const;
 
-  /// Per piece, its planes; a plane whose side could not be made certain
-  /// is left out (the filter only ever keeps more).
-  std::vector<std::vector<Plane>> pyramids_;
+  /// Piece k's planes are planes_[ends_[k − 1]] .. planes_[ends_[k] − 1];
+  /// a plane whose side could not be made certain is left out (the filter
+  /// only ever keeps more).
+  std::vector<FilterPlane> planes_;
+  std::vector<std::uint32_t> ends_;
+  Box reach_;  ///< H's box and the pieces' hulls
 };
 
 /// Which side of a triangle's plane H lies on, orientation(v0, v1, v2, H)

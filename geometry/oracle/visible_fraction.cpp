@@ -316,7 +316,10 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   double magnitude = index.magnitude();
   for (const Vec3& v : light.vertices) magnitude = std::max(magnitude, max_abs(v));
   const HitSide side_of_h(sp);
-  const PyramidFilter filter(pieces, side_of_h.h_box(), magnitude);
+  thread_local HitPlane hit_plane;  // per-thread scratch, like the filter
+  hit_plane.assign({tri.a, tri.b, tri.c}, light.vertices, magnitude);
+  thread_local PyramidFilter filter;
+  filter.assign(pieces, side_of_h.h_box(), magnitude, &hit_plane);
   thread_local std::vector<std::uint32_t> candidates;  // per-thread scratch: every sample asks
   thread_local TrianglesAtH triangles;
   candidates.clear();
@@ -329,7 +332,8 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   bool all_blocked = false;
   if (hit_polygon.casts_shadows && index.size_of(hit_polygon) == 3) {
     candidates.push_back(hit.polygon);
-    triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, triangles);
+    triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, hit_plane,
+                 triangles);
     all_blocked = triangles.blocks_all;
     candidates.clear();
   }
@@ -338,7 +342,7 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   else
     index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
   std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
-  triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, triangles);
+  triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, hit_plane, triangles);
   Box light_box;
   for (const Vec3& v : light.vertices) light_box.extend(v);
   keep_one_side(index.shells(), triangles, sp, side_of_h, light_box, filter);
