@@ -13,6 +13,7 @@
 // surface join shells: a larger polygon's fan triangles count mod 2, not
 // as a chain, and a degenerate one blocks nothing.
 #include <umbra/geometry/box.h>
+#include <umbra/geometry/oracle/bvh.h>
 #include <umbra/geometry/scene.h>
 #include <umbra/geometry/volumes/model_edges.h>
 
@@ -29,11 +30,22 @@ struct Shell {
   Box cap;  ///< its boundary edges' vertices; empty when it is closed
 };
 
+/// A box inside a closed shell: every point of it has a nonzero winding
+/// number (inner_boxes.h).
+struct InnerBox {
+  Box box;
+  std::uint32_t shell = 0;
+};
+
 struct ShellTable {
   static constexpr std::uint32_t kNone = 0xffffffffu;
   /// Per polygon of the index: its shell, or kNone (not a casting triangle).
   std::vector<std::uint32_t> shell_of;
   std::vector<Shell> shells;
+  /// Boxes inside the closed shells, and a tree over them (item i is
+  /// inner[i]); empty until add_inner_boxes (SceneIndex::shells does).
+  std::vector<InnerBox> inner;
+  Bvh inner_tree;
 };
 
 /// The shells of the casting triangles among `polygons` (a SceneIndex's,

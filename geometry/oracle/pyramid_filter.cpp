@@ -20,28 +20,32 @@ Box interval_box(const SamplePoint& sp) {
   return box;
 }
 
-/// The plane with normal N through o, outside where s·(N·x − N·o) < 0 for
-/// s the sign at the inside reference `in`; none when that sign is not
-/// certain (the filter then keeps more). Under upward rounding: every
-/// bound rounds up.
-std::optional<FilterPlane> filter_plane(const IPoint& normal, const IPoint& origin,
-                                        const IPoint& in, double magnitude) {
-  const Interval c = dot(normal, origin);
-  const Interval inside = dot(normal, in) - c;
+/// The plane with normal N through the exact point o, outside where
+/// s·N·(x − o) < 0 for s the sign at the inside reference `in`; none when
+/// that sign is not certain (the filter then keeps more). Both forms; the
+/// constant one for coordinates within `magnitude` (none when 0). Under
+/// upward rounding: the bounds round up.
+std::optional<FilterPlane> filter_plane(const IPoint& normal, const Vec3& o, const IPoint& in,
+                                        double magnitude) {
+  const IPoint io = ip(o);
+  const Interval inside = dot(normal, in - io);
   double s = 0;
   if (inside.inf() > 0) s = 1;
   if (inside.sup() < 0) s = -1;
   if (s == 0) return std::nullopt;
-  FilterPlane p{{s * mid(normal.x), s * mid(normal.y), s * mid(normal.z)}, s * mid(c), 0};
-  if (!std::isfinite(p.n.x) || !std::isfinite(p.n.y) || !std::isfinite(p.n.z) ||
-      !std::isfinite(p.c))
-    return std::nullopt;
+  FilterPlane p{{s * mid(normal.x), s * mid(normal.y), s * mid(normal.z)}, o, {}};
   const double gamma = 5e-16;  // > γ₄ = 4u/(1 − 4u), u = 2⁻⁵³
+  p.w = {diameter(normal.x) + gamma * std::abs(p.n.x), diameter(normal.y) + gamma * std::abs(p.n.y),
+         diameter(normal.z) + gamma * std::abs(p.n.z)};
+  const Interval c = dot(normal, io);
+  p.c = s * mid(c);
   p.margin =
       2 *
       ((diameter(normal.x) + diameter(normal.y) + diameter(normal.z)) * magnitude + diameter(c) +
        gamma * ((std::abs(p.n.x) + std::abs(p.n.y) + std::abs(p.n.z)) * magnitude + std::abs(p.c)));
-  if (!std::isfinite(p.margin)) return std::nullopt;
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(p.n[k]) || !std::isfinite(p.w[k])) return std::nullopt;
+  if (!std::isfinite(p.c) || !std::isfinite(p.margin)) return std::nullopt;
   return p;
 }
 
@@ -62,12 +66,12 @@ void HitPlane::assign(const std::array<Vec3, 3>& triangle, std::span<const Vec3>
     if (s != front) front = Sign::zero;
   filter_plane.reset();
   if (front != Sign::zero) {
-    // Through the triangle's exact corners (H lies in its plane), the
-    // light on its inner side: any light vertex will do as reference.
+    // Through the triangle's corner (H lies in its plane), the light on
+    // its inner side: any light vertex will do as reference.
     CGAL::Protect_FPU_rounding<true> guard;
     const IPoint a = ip(t[0]);
     filter_plane =
-        soft::filter_plane(cross(ip(t[1]) - a, ip(t[2]) - a), a, ip(light.front()), magnitude);
+        soft::filter_plane(cross(ip(t[1]) - a, ip(t[2]) - a), t[0], ip(light.front()), magnitude);
   }
 }
 
@@ -92,6 +96,7 @@ void PyramidFilter::assign(std::span<const LightPiece> pieces, const Box& h_box,
                            const HitPlane* hit_plane) {
   planes_.clear();
   ends_.clear();
+  local_ = magnitude == 0;
   CGAL::Protect_FPU_rounding<true> guard;  // upwards: every bound below rounds up
   const IPoint h{Interval(h_box.lo.x, h_box.hi.x), Interval(h_box.lo.y, h_box.hi.y),
                  Interval(h_box.lo.z, h_box.hi.z)};
@@ -104,15 +109,19 @@ void PyramidFilter::assign(std::span<const LightPiece> pieces, const Box& h_box,
   for (const LightPiece& piece : pieces) {
     const std::size_t m = piece.hull.size();
     for (std::size_t i = 0; i < m; ++i) {
-      const IPoint p = ip(piece.hull[i]), q = ip(piece.hull[(i + 1) % m]);
-      add(filter_plane(cross(p - h, q - h), h, ip(piece.hull[(i + 2) % m]), magnitude));
+      // Through H, p and q: (p − H)×(q − H), or for a wide box of H
+      // (a region) p×q + H×(p − q), whose width does not grow with |p − H|.
+      const Vec3& p = piece.hull[i];
+      const IPoint ipp = ip(p), q = ip(piece.hull[(i + 1) % m]);
+      const IPoint normal = local_ ? cross(ipp, q) + cross(h, ipp - q) : cross(ipp - h, q - h);
+      add(filter_plane(normal, p, ip(piece.hull[(i + 2) % m]), magnitude));
     }
     const std::array<Vec3, 3>& f = piece.fan.front();
     const IPoint f0 = ip(f[0]);
-    add(filter_plane(cross(ip(f[1]) - f0, ip(f[2]) - f0), f0, h, magnitude));
+    add(filter_plane(cross(ip(f[1]) - f0, ip(f[2]) - f0), f[0], h, magnitude));
     // The whole light lies in front of the hit plane through H: a side of
-    // every piece's pyramid too.
-    if (hit_plane && hit_plane->magnitude == magnitude) add(hit_plane->filter_plane);
+    // every piece's pyramid too (its local form holds at any magnitude).
+    if (hit_plane && (local_ || hit_plane->magnitude == magnitude)) add(hit_plane->filter_plane);
     ends_.push_back(static_cast<std::uint32_t>(planes_.size()));
   }
 }
@@ -123,9 +132,16 @@ bool PyramidFilter::all_outside(const std::array<Vec3, K>& corners) const {
   for (const std::uint32_t end : ends_) {
     bool missed = false;
     for (std::uint32_t i = begin; i < end && !missed; ++i) {
-      const FilterPlane& p = planes_[i];
       bool out = true;
-      for (const Vec3& x : corners) out = out && p.value(x) < -p.margin;
+      const FilterPlane& p = planes_[i];
+      for (const Vec3& x : corners) {
+        if (local_) {
+          const Vec3 d = x - p.o;
+          out = out && p.local_value(d) < -p.local_bound(d);
+        } else {
+          out = out && p.value(x) < -p.margin;
+        }
+      }
       missed = out;
     }
     if (!missed) return false;
@@ -140,8 +156,10 @@ bool PyramidFilter::misses(const Box& b) const {
   // Exact comparisons of doubles: the pyramids lie in reach_.
   for (int k = 0; k < 3; ++k)
     if (b.hi[k] < reach_.lo[k] || reach_.hi[k] < b.lo[k]) return true;
-  // All eight corners outside a plane when the one farthest along its
-  // normal is: that corner's value is computed as every corner's would be.
+  // Every corner outside a plane when the one farthest along its normal is
+  // (the midpoint plane's value is largest there): in the constant form
+  // with the one margin, in the local form with the bound taken at the
+  // box's largest |x_k − o_k|, no less than at any corner.
   std::uint32_t begin = 0;
   for (const std::uint32_t end : ends_) {
     bool missed = false;
@@ -149,7 +167,14 @@ bool PyramidFilter::misses(const Box& b) const {
       const FilterPlane& p = planes_[i];
       const Vec3 far{p.n.x > 0 ? b.hi.x : b.lo.x, p.n.y > 0 ? b.hi.y : b.lo.y,
                      p.n.z > 0 ? b.hi.z : b.lo.z};
-      missed = p.value(far) < -p.margin;
+      if (!local_) {
+        missed = p.value(far) < -p.margin;
+        continue;
+      }
+      const Vec3 widest{std::max(std::abs(b.lo.x - p.o.x), std::abs(b.hi.x - p.o.x)),
+                        std::max(std::abs(b.lo.y - p.o.y), std::abs(b.hi.y - p.o.y)),
+                        std::max(std::abs(b.lo.z - p.o.z), std::abs(b.hi.z - p.o.z))};
+      missed = p.local_value(far - p.o) < -p.local_bound(widest);
     }
     if (!missed) return false;
     begin = end;

@@ -4,21 +4,36 @@
 // proven margin, so that the visible fraction (visible_fraction.cpp) runs
 // its filtered predicates only on what may block.
 //
-// Each plane of a pyramid (through H and a hull edge, and the light's
-// plane) is made once a sample in intervals from an interval H: f(x) =
-// N·x − c with the true N, c inside the intervals. A corner x is certainly
-// outside when the double N̂·x − ĉ (N̂, ĉ the midpoints) is below −m, m
-// bounding both the midpoints' error, Σ rad(N_k)·|x_k| + rad(c), and the
-// rounding of the double evaluation, γ₄·(Σ|N̂_k·x_k| + |ĉ|), for every x
-// within the scene's magnitude. All corners of a triangle (or a box)
-// certainly outside one plane: it cannot meet the open pyramid, nor hold H
-// (which lies on every side and strictly inside the light's plane), which
-// is exactly what the exact tests would find.
+// Each plane of a pyramid (through H and a hull edge (p, q), and the
+// light's plane) is made once a sample in intervals from an interval H,
+// through an exact point o of it (p; a fan corner of the light). Its true
+// function N·(x − o) has N inside the interval normal. A sample's filter
+// takes the constant form: x is certainly outside when the double N̂·x − ĉ
+// (the midpoints) is below −m, m bounding the midpoints' error,
+// Σ rad(N_k)·|x_k| + rad(c), and the rounding of the evaluation,
+// γ₄·(Σ|N̂_k·x_k| + |ĉ|), for every x within the scene's magnitude: one
+// comparison a corner, the normal being a few ulps wide. A filter for a
+// region of samples (lit_region.h) takes the local form, bounded by
+// Σ (diam(N_k) + γ₄·|N̂_k|)·|x_k − o_k| at x, with the side normals made as
+// p×q + H×(p − q), whose width is the region's times |p − q|, not times
+// |p − H|: a margin scaled by the scene's size would keep everything.
+// All corners of a triangle (or a box) certainly outside one plane: it
+// cannot meet the open pyramid, nor hold H (which lies on every side and
+// strictly inside the light's plane), which is exactly what the exact
+// tests would find.
+//
+// Where the whole light lies strictly in front of the hit triangle's plane
+// (HitPlane), that plane through H is one more side of every pyramid: the
+// segments from H to the light leave it at H, so what lies behind it,
+// closed, blocks nothing (a lit sample on a closed model need not ask the
+// model's far half). And every pyramid lies in the box of H's box and the
+// light's hull: a box apart from it is passed over by comparisons alone.
 #include <umbra/geometry/box.h>
 #include <umbra/geometry/exact/predicates.h>
 #include <umbra/geometry/oracle/area_light_pieces.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -26,12 +41,22 @@
 
 namespace umbra::geometry::soft {
 
-/// A plane of the filter in doubles, f(x) = n·x − c: a point x within the
-/// magnitude it was made for is certainly on its outer side when f(x) <
-/// −margin.
+/// A plane of the filter in doubles through an exact point o, in two
+/// forms. Local: f(x) = n·(x − o), n the midpoint of the interval normal;
+/// the true plane's function differs from the computed f(x) by at most
+/// Σ w_k·|x_k − o_k| (w_k: the normal's diameter and the rounding of the
+/// evaluation, γ₄·|n_k|). Constant: f(x) = n·x − c, within `margin` of the
+/// true function for every x within the magnitude it was made for (a
+/// sample's own filter, whose normal is a few ulps wide: one comparison a
+/// corner). x is certainly on the outer side when f(x) is below minus
+/// the bound.
 struct FilterPlane {
-  Vec3 n;
+  Vec3 n, o, w;
   double c = 0, margin = 0;
+  double local_value(const Vec3& d) const { return n.x * d.x + n.y * d.y + n.z * d.z; }
+  double local_bound(const Vec3& d) const {
+    return (w.x * std::abs(d.x) + w.y * std::abs(d.y) + w.z * std::abs(d.z)) * (1 + 1e-14);
+  }
   double value(const Vec3& x) const { return n.x * x.x + n.y * x.y + n.z * x.z - c; }
 };
 
@@ -67,7 +92,9 @@ class PyramidFilter {
   PyramidFilter(std::span<const LightPiece> pieces, const SamplePoint& sp, double magnitude);
   /// The same from a box known to hold H (HitSide::h_box: made once a
   /// sample for both), with the hit triangle's plane as one more side of
-  /// each pyramid when `hit_plane` has one for `magnitude`.
+  /// each pyramid when `hit_plane` has one for `magnitude`. With no
+  /// magnitude (0), the planes' local form: for a region round several
+  /// samples' H (lit_region.h), whose normals are wide.
   PyramidFilter(std::span<const LightPiece> pieces, const Box& h_box, double magnitude,
                 const HitPlane* hit_plane = nullptr);
   /// Remade in place, as the constructor makes it: a sample's filter in
@@ -91,7 +118,8 @@ class PyramidFilter {
   /// only ever keeps more).
   std::vector<FilterPlane> planes_;
   std::vector<std::uint32_t> ends_;
-  Box reach_;  ///< H's box and the pieces' hulls
+  Box reach_;           ///< H's box and the pieces' hulls
+  bool local_ = false;  ///< the planes' local form (no magnitude)
 };
 
 /// Which side of a triangle's plane H lies on, orientation(v0, v1, v2, H)

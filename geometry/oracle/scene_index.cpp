@@ -1,8 +1,10 @@
 #include <umbra/geometry/oracle/closed_shells.h>
+#include <umbra/geometry/oracle/inner_boxes.h>
 #include <umbra/geometry/oracle/scene_index.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace umbra::geometry {
 
@@ -10,6 +12,8 @@ SceneIndex::SceneIndex(const Scene& scene) : SceneIndex(scene, {}) {}
 
 SceneIndex::SceneIndex(const Scene& scene, std::span<const ModelTables> tables)
     : scene_(&scene), owned_(scene.models.size()) {
+  static std::atomic<std::uint64_t> made{0};
+  serial_ = ++made;
   shells_->edges.assign(scene.models.size(), nullptr);
   for (std::uint32_t m = 0; m < scene.models.size(); ++m) {
     const Model& model = scene.models[m];
@@ -49,8 +53,9 @@ const Bvh* SceneIndex::tree() const {
 
 const ShellTable& SceneIndex::shells() const {
   std::call_once(shells_->once, [this] {
-    shells_->table =
-        std::make_shared<const ShellTable>(shell_table(*scene_, polygons_, shells_->edges));
+    ShellTable table = shell_table(*scene_, polygons_, shells_->edges);
+    add_inner_boxes(*this, table);
+    shells_->table = std::make_shared<const ShellTable>(std::move(table));
   });
   return *shells_->table;
 }

@@ -11,6 +11,7 @@
 #include <umbra/geometry/volumes/model_tables.h>
 
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -76,6 +77,9 @@ class SceneIndex {
   const Box& bounds() const { return bounds_; }
   /// Largest absolute coordinate in bounds(): sets the scale of float slack.
   double magnitude() const { return magnitude_; }
+  /// Unique among the indices of this process: per-thread caches of what
+  /// holds for an index key on it (an address may be reused).
+  std::uint64_t serial() const { return serial_; }
   /// The casting triangles' shells (closed_shells.h), made on first use
   /// (the area lights' visible fraction asks; nothing else does).
   /// Thread-safe.
@@ -104,6 +108,7 @@ class SceneIndex {
   std::unique_ptr<LazyShells> shells_ = std::make_unique<LazyShells>();
   Box bounds_;
   double magnitude_ = 0;
+  std::uint64_t serial_ = 0;
 };
 
 }  // namespace umbra::geometry

@@ -7,6 +7,8 @@
 #include <umbra/geometry/oracle/certified_fraction.h>
 #include <umbra/geometry/oracle/exact_corners.h>
 #include <umbra/geometry/oracle/flat_seam.h>
+#include <umbra/geometry/oracle/inner_boxes.h>
+#include <umbra/geometry/oracle/lit_region.h>
 #include <umbra/geometry/oracle/pyramid_filter.h>
 #include <umbra/geometry/oracle/rational_geometry.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
@@ -318,8 +320,21 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   const HitSide side_of_h(sp);
   thread_local HitPlane hit_plane;  // per-thread scratch, like the filter
   hit_plane.assign({tri.a, tri.b, tri.c}, light.vertices, magnitude);
-  thread_local PyramidFilter filter;
-  filter.assign(pieces, side_of_h.h_box(), magnitude, &hit_plane);
+  // A region around an earlier sample's H on this polygon that no other
+  // polygon's box may block (lit_region.h): its filter stands for H's own.
+  // Only where the hit polygon is planar with the whole light on one side
+  // of it: there it alone answers V = 1 (light in front) or 0 (behind)
+  // exactly, as any superset of the candidates does, so that the answer
+  // owes nothing to what this thread has seen.
+  thread_local LitRegions lit_regions;
+  const IndexedPolygon& hit_polygon = index.polygons()[hit.polygon];
+  const bool one_sided_hit =
+      hit_polygon.surface->shape == PolygonShape::planar && hit_plane.front != Sign::zero;
+  const PyramidFilter* region =
+      one_sided_hit ? lit_regions.find(index, light_index, hit, side_of_h.h_box()) : nullptr;
+  thread_local PyramidFilter own_filter;
+  if (!region) own_filter.assign(pieces, side_of_h.h_box(), magnitude, &hit_plane);
+  const PyramidFilter& filter = region ? *region : own_filter;
   thread_local std::vector<std::uint32_t> candidates;  // per-thread scratch: every sample asks
   thread_local TrianglesAtH triangles;
   candidates.clear();
@@ -328,7 +343,6 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   // away from the light), it alone blocks all of the light, and only the
   // polygons whose box holds H matter (for the boundary flag), not the
   // pyramid's hundreds.
-  const IndexedPolygon& hit_polygon = index.polygons()[hit.polygon];
   bool all_blocked = false;
   if (hit_polygon.casts_shadows && index.size_of(hit_polygon) == 3) {
     candidates.push_back(hit.polygon);
@@ -337,14 +351,26 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
     all_blocked = triangles.blocks_all;
     candidates.clear();
   }
-  if (all_blocked)
-    index.query_box(side_of_h.h_box(), 0.0, candidates);
-  else
-    index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
-  std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
-  triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, hit_plane, triangles);
   Box light_box;
   for (const Vec3& v : light.vertices) light_box.extend(v);
+  // A solid in the way: a box inside a closed model hides every piece
+  // (inner_boxes.h). Then, as for one blocking triangle, only the polygons
+  // holding H are asked (for the boundary flag).
+  const bool hidden =
+      !all_blocked && !region &&
+      hidden_by_inner_box(index.shells(), pieces, side_of_h.h_box(), light_box, filter);
+  if (all_blocked || hidden) {
+    index.query_box(side_of_h.h_box(), 0.0, candidates);
+  } else if (region) {
+    candidates.push_back(hit.polygon);
+  } else {
+    index.query_if([&](const Box& b) { return !filter.misses(b); }, candidates);
+    if (one_sided_hit && candidates.size() == 1 && candidates.front() == hit.polygon)
+      lit_regions.learn(index, light_index, hit, side_of_h.h_box(), pieces, light.vertices,
+                        hit_plane);
+  }
+  std::sort(candidates.begin(), candidates.end());  // the same answer whatever the BVH's order
+  triangles_at(index, candidates, sp, hit, light.vertices, filter, side_of_h, hit_plane, triangles);
   keep_one_side(index.shells(), triangles, sp, side_of_h, light_box, filter);
   // H = eye + t·d exactly, t = n·(a − eye) / n·d on the hit triangle's
   // plane: made only when something may block.
@@ -363,7 +389,9 @@ VisibleFraction visible_fraction(const SceneIndex& index, const SampleRay& ray,
   fractions.clear();
   for (const LightPiece& piece : pieces) {
     PieceResult r;
-    if (triangles.empty() || triangles.blocks_all) {
+    if (hidden) {
+      r.fraction = 0;  // H lies off every piece's plane (hidden_by_inner_box)
+    } else if (triangles.empty() || triangles.blocks_all) {
       r.in_plane = side_of_h.of(piece.fan[0]) == Sign::zero;
       r.fraction = triangles.blocks_all && !r.in_plane ? 0 : 1;  // in its plane: taken as 1
     } else {

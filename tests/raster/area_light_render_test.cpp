@@ -103,9 +103,10 @@ std::uint64_t exact_union_samples(const geometry::Scene& scene) {
 TEST(AreaLightRender, StatisticsCountTheSamplesTheExactUnionMade) {
   // counts.area_exact_samples: the samples the certified fraction could not
   // answer, as many as a count outside the renderer finds. None in
-  // soft_square (every blocker far from its samples); some under a light
-  // 0.1 wide over the wall of a box standing on the floor (contact
-  // penumbrae, clip decisions too close to call in intervals).
+  // soft_square (every blocker far from its samples); some with a light
+  // 0.1 wide beside a box standing on the floor, in the plane of its top
+  // (the top's corners lie in the light's plane: clip decisions no
+  // interval can make).
   geometry::Scene scene = soft_square();
   RenderStats stats;
   render(scene, {.method = Method::volume, .threads = 2}, &stats);
@@ -118,9 +119,9 @@ TEST(AreaLightRender, StatisticsCountTheSamplesTheExactUnionMade) {
   box.polygons = {{4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   scene.models = {scene.models[0], box};
   scene.camera.eye = {3, 4, 3};
-  scene.lights[0].vertices = {{0.45, 3, -0.05}, {0.45, 3, 0.05}, {0.55, 3, 0.05}, {0.55, 3, -0.05}};
+  scene.lights[0].vertices = {{0.55, 1, -0.05}, {0.55, 1, 0.05}, {0.65, 1, 0.05}, {0.65, 1, -0.05}};
   render(scene, {.method = Method::volume, .threads = 2}, &stats);
-  EXPECT_GT(stats.area_exact_samples, 0u);  // 35
+  EXPECT_GT(stats.area_exact_samples, 0u);  // 832
   EXPECT_EQ(stats.area_exact_samples, exact_union_samples(scene));
 }
 

@@ -8,6 +8,7 @@
 // y is up; the floor is y = 0.
 #include <tests/support/area_light_scenes.h>
 #include <umbra/geometry/oracle/closed_shells.h>
+#include <umbra/geometry/oracle/inner_boxes.h>
 #include <umbra/geometry/oracle/pyramid_filter.h>
 #include <umbra/geometry/oracle/visible_fraction.h>
 
@@ -277,5 +278,94 @@ TEST(HalfAShell, KeepsEverythingWhenTheEyeOrTheLightIsInsideTheShell) {
   EXPECT_GE(seen.samples, 200);        // 202
 }
 
+// ---------------------------------------------------------------------------
+// Boxes inside closed shells, and the umbra they prove (inner_boxes.h).
+
+TEST(InnerBoxes, LieInsideAClosedOctahedronAndAnInwardBox) {
+  // The octahedron's faces are large: its cells are cleared by their
+  // planes, not their boxes. The inward box has winding −1 inside.
+  const Model octa = octahedron({0, 1, 0}, 1, 0.5, 0.75);
+  const Scene s = scene_of({octa, box_mesh({3, 0, 0}, {4, 2, 1}, true)}, {});
+  const SceneIndex index(s);
+  const ShellTable& table = index.shells();
+  ASSERT_EQ(table.shells.size(), 2u);
+  const std::uint32_t octahedron_shell = table.shell_of[0];
+  int in_octahedron = 0, in_box = 0;
+  for (const InnerBox& inner : table.inner) {
+    for (int c = 0; c < 8; ++c) {
+      const Vec3 p{c & 1 ? inner.box.hi.x : inner.box.lo.x, c & 2 ? inner.box.hi.y : inner.box.lo.y,
+                   c & 4 ? inner.box.hi.z : inner.box.lo.z};
+      if (inner.shell == octahedron_shell) {
+        // Strictly behind every face (counter-clockwise from outside).
+        for (const Polygon& f : octa.polygons)
+          EXPECT_EQ(orientation(octa.vertices[f[0]], octa.vertices[f[1]], octa.vertices[f[2]], p),
+                    Sign::negative);
+      } else {
+        EXPECT_TRUE(p.x > 3 && p.x < 4 && p.y > 0 && p.y < 2 && p.z > 0 && p.z < 1);
+      }
+    }
+    (inner.shell == octahedron_shell ? in_octahedron : in_box) += 1;
+  }
+  EXPECT_GE(in_octahedron, 1);
+  EXPECT_GE(in_box, 1);
+}
+
+TEST(InnerBoxes, NoneInAnOpenShell) {
+  const Scene s = scene_of({box_mesh({0, 0, 0}, {2, 2, 2}, false, {0})}, {});
+  const SceneIndex index(s);
+  EXPECT_TRUE(index.shells().inner.empty());
+  EXPECT_EQ(index.shells().shells.size(), 1u);
+}
+
+TEST(ASolidInTheWay, HidesOnlyWhereTheExactFractionIsZero) {
+  // A closed block over the floor under a small light, seen from low at
+  // the side (under the block): floor samples deep in its umbra are
+  // hidden by a box inside it; V there is 0 in the split scene, where no
+  // shell exists. Every sample's V equals the split scene's.
+  const Model block = box_mesh({-1, 0.5, -1}, {1, 1.5, 1});
+  const Light small =
+      area_light({{-0.25, 4, -0.25}, {-0.25, 4, 0.25}, {0.25, 4, 0.25}, {0.25, 4, -0.25}});
+  const Scene s = scene_of({floor_model(), block}, {small});
+  const Scene apart = split(s);
+  const SceneIndex index(s), apart_index(apart);
+  const std::vector<soft::LightPiece> pieces = soft::light_pieces(small.vertices);
+  Box light_box;
+  for (const Vec3& v : small.vertices) light_box.extend(v);
+  const Vec3 eye{6, 0.25, 0.125};
+  int hidden = 0, dark = 0, lit = 0;
+  for (const Vec3& target : floor_grid(2.5, 24)) {
+    const SampleRay ray{eye, target - eye};
+    const auto hit = first_hit(index, ray);
+    const auto apart_hit = first_hit(apart_index, ray);
+    ASSERT_TRUE(hit && apart_hit);
+    const HitTriangle tri = hit_triangle(index, *hit);
+    const SamplePoint sp{ray.origin, ray.direction, tri.a, tri.b, tri.c};
+    const soft::HitSide side(sp);
+    const soft::PyramidFilter filter(pieces, side.h_box(), 10);
+    const double truth = visible_fraction(apart_index, ray, *apart_hit, 0).value;
+    EXPECT_EQ(visible_fraction(index, ray, *hit, 0).value, truth);
+    if (soft::hidden_by_inner_box(index.shells(), pieces, side.h_box(), light_box, filter)) {
+      EXPECT_EQ(truth, 0) << target.x << " " << target.z;
+      ++hidden;
+    }
+    dark += truth == 0;
+    lit += truth == 1;
+  }
+  EXPECT_GE(hidden, 120);  // 144 of the 196 dark samples with this grid
+  EXPECT_GT(dark, hidden);
+  EXPECT_GE(lit, 250);  // 320
+}
+
+TEST(ASolidInTheWay, NeverWithTheLightInsideTheShellsBox) {
+  // A closed room with the light and the eye inside: boxes inside it fill
+  // the room, and the segments from its floor to the light pass through
+  // them, but the light is inside too: the floor is lit.
+  Seen seen;
+  const Model room = box_mesh({-3, 0, -3}, {3, 5, 3});
+  expect_same_fractions(scene_of({room, octahedron({0, 2, 0}, 0.5, 0.5, 0.5)}, {square_light()}),
+                        {2, 2, 2}, floor_grid(2.5, 10), seen);
+  EXPECT_GE(seen.samples, 100);
+  EXPECT_GE(seen.samples - seen.dark - seen.partial, 30);  // lit
+}
 }  // namespace
 }  // namespace umbra::geometry

@@ -25,8 +25,8 @@ using namespace area_light_scenes;
 /// 0, which the square light (x in [−1, 1] at y = 4) straddles; its
 /// corners are exact for H on a grid of binary fractions.
 Model tilted_receiver(const Vec3& h) {
-  return polygon_model(
-      {{h.x + 2, -10, h.z - 30}, {h.x + 2, -10, h.z + 30}, {h.x - 2, 10, h.z}}, false);
+  return polygon_model({{h.x + 2, -10, h.z - 30}, {h.x + 2, -10, h.z + 30}, {h.x - 2, 10, h.z}},
+                       false);
 }
 
 struct Seen {
