@@ -1,6 +1,7 @@
 #include <umbra/geometry/oracle/certified_fraction.h>
 #include <umbra/geometry/oracle/covered_area_sweep.h>
 #include <umbra/geometry/oracle/interval_clip.h>
+#include <umbra/geometry/oracle/projected_vertices.h>
 
 #include <algorithm>
 #include <bit>
@@ -331,6 +332,8 @@ std::optional<double> certified_piece_fraction(const LightPiece& piece, const Sa
   const double remake_above = std::max(hu - lu, hv - lv) * 0x1p-40;
   candidates.clear();
   edges.clear();
+  thread_local ProjectedVertices projected;
+  projected.reset(3 * triangles.size());
   double budget = 0;  // area the midpoints' edges may miscount
   std::uint32_t groups = 1;
   for (std::size_t g = 0; g < ends.size(); ++g) {
@@ -404,15 +407,21 @@ std::optional<double> certified_piece_fraction(const LightPiece& piece, const Sa
           }
           if (polygon.size() < 3) continue;
         }
-        // Central projection from H onto the light's plane.
+        // Central projection from H onto the light's plane (memoised).
         for (std::size_t c = 0; c < polygon.size(); ++c) {
-          const IPoint& x = polygon[c];
-          const Interval k = h_height / (h_height - dot(light_normal, x - f0));
-          const IPoint y = h + (x - h) * k;
-          exact_ring.push_back({y[u], y[v]});
-          const double error = std::max(y[u].sup() - y[u].inf(), y[v].sup() - y[v].inf());
+          const auto project = [&] {
+            const IPoint& x = polygon[c];
+            const IPoint y = h + (x - h) * (h_height / (h_height - dot(light_normal, x - f0)));
+            return std::pair{y[u], y[v]};
+          };
+          const bool input = source[c].known && source[c].plane == -1;
+          const std::pair<Interval, Interval> y2 =
+              input ? projected.get(source[c].a, project) : project();
+          exact_ring.push_back(y2);
+          const auto& [yu, yv] = y2;
+          const double error = std::max(yu.sup() - yu.inf(), yv.sup() - yv.inf());
           if (!std::isfinite(error)) return std::nullopt;
-          ring.push_back({mid(y[u]), mid(y[v]), error, source[c]});
+          ring.push_back({mid(yu), mid(yv), error, source[c]});
         }
         bool wide_corner = false;
         for (const Corner& c : ring) wide_corner = wide_corner || c.error > remake_above;

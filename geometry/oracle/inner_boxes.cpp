@@ -52,8 +52,8 @@ std::optional<Grid> make_grid(const Box& box, int cells) {
 /// minus that at q. None when the segment meets a triangle's edge or vertex
 /// line-wise (then another q is tried). p must lie on no triangle, q
 /// neither.
-std::optional<int> crossings(const SceneIndex& index, const ShellTable& table,
-                             std::uint32_t shell, const Vec3& p, const Vec3& q) {
+std::optional<int> crossings(const SceneIndex& index, const ShellTable& table, std::uint32_t shell,
+                             const Vec3& p, const Vec3& q) {
   std::vector<std::uint32_t> candidates;
   index.query_segment(p, q, false, 0.0, candidates);
   int w = 0;
@@ -133,10 +133,10 @@ std::vector<Box> shell_inner_boxes(const SceneIndex& index, const ShellTable& ta
             const Sign first = orientation(a, b, c, cell.lo);
             bool apart = first != Sign::zero;
             for (int corner = 1; corner < 8 && apart; ++corner)
-              apart = orientation(a, b, c,
-                                  {corner & 1 ? cell.hi.x : cell.lo.x,
-                                   corner & 2 ? cell.hi.y : cell.lo.y,
-                                   corner & 4 ? cell.hi.z : cell.lo.z}) == first;
+              apart = orientation(
+                          a, b, c,
+                          {corner & 1 ? cell.hi.x : cell.lo.x, corner & 2 ? cell.hi.y : cell.lo.y,
+                           corner & 4 ? cell.hi.z : cell.lo.z}) == first;
             if (apart) continue;
           }
           touched[g.at(i, j, k)] = 1;
@@ -195,14 +195,12 @@ std::vector<Box> shell_inner_boxes(const SceneIndex& index, const ShellTable& ta
       for (int i = 0; i < g.n[0]; ++i) {
         const std::size_t c = g.at(i, j, k);
         if (depth[c] != -1) continue;
-        bool edge = i == 0 || j == 0 || k == 0 || i == g.n[0] - 1 || j == g.n[1] - 1 ||
-                    k == g.n[2] - 1;
-        for (const std::size_t d : {g.at(std::max(i - 1, 0), j, k),
-                                    g.at(std::min(i + 1, g.n[0] - 1), j, k),
-                                    g.at(i, std::max(j - 1, 0), k),
-                                    g.at(i, std::min(j + 1, g.n[1] - 1), k),
-                                    g.at(i, j, std::max(k - 1, 0)),
-                                    g.at(i, j, std::min(k + 1, g.n[2] - 1))})
+        bool edge =
+            i == 0 || j == 0 || k == 0 || i == g.n[0] - 1 || j == g.n[1] - 1 || k == g.n[2] - 1;
+        for (const std::size_t d :
+             {g.at(std::max(i - 1, 0), j, k), g.at(std::min(i + 1, g.n[0] - 1), j, k),
+              g.at(i, std::max(j - 1, 0), k), g.at(i, std::min(j + 1, g.n[1] - 1), k),
+              g.at(i, j, std::max(k - 1, 0)), g.at(i, j, std::min(k + 1, g.n[2] - 1))})
           edge = edge || !in[d];
         if (edge) {
           depth[c] = 1;
@@ -217,8 +215,7 @@ std::vector<Box> shell_inner_boxes(const SceneIndex& index, const ShellTable& ta
       for (const std::array<int, 3>& d :
            {std::array{i - 1, j, k}, std::array{i + 1, j, k}, std::array{i, j - 1, k},
             std::array{i, j + 1, k}, std::array{i, j, k - 1}, std::array{i, j, k + 1}}) {
-        if (d[0] < 0 || d[1] < 0 || d[2] < 0 || d[0] >= g.n[0] || d[1] >= g.n[1] ||
-            d[2] >= g.n[2])
+        if (d[0] < 0 || d[1] < 0 || d[2] < 0 || d[0] >= g.n[0] || d[1] >= g.n[1] || d[2] >= g.n[2])
           continue;
         const std::size_t at = g.at(d[0], d[1], d[2]);
         if (depth[at] != -1) continue;
@@ -237,11 +234,11 @@ std::vector<Box> shell_inner_boxes(const SceneIndex& index, const ShellTable& ta
   std::vector<Box> boxes;
   for (const std::size_t seed : seeds) {
     if (held[seed] || boxes.size() >= kBoxesPerShell) continue;
-    const std::array<int, 3> c{static_cast<int>(seed % g.n[0]),
-                               static_cast<int>(seed / g.n[0] % g.n[1]),
-                               static_cast<int>(seed / (static_cast<std::size_t>(g.n[0]) * g.n[1]))};
-    for (const std::array<int, 3>& order : {std::array{0, 1, 2}, std::array{1, 2, 0},
-                                            std::array{2, 0, 1}}) {
+    const std::array<int, 3> c{
+        static_cast<int>(seed % g.n[0]), static_cast<int>(seed / g.n[0] % g.n[1]),
+        static_cast<int>(seed / (static_cast<std::size_t>(g.n[0]) * g.n[1]))};
+    for (const std::array<int, 3>& order :
+         {std::array{0, 1, 2}, std::array{1, 2, 0}, std::array{2, 0, 1}}) {
       std::array<int, 3> lo = c, hi = c;
       // Whether every cell of the box with axis `a` set to `at` is inside.
       const auto slab_inside = [&](int a, int at) {
@@ -308,8 +305,8 @@ bool passes_through(const Box& box, const Vec3& h, const Vec3& width, const Vec3
   double t0 = 0, t1 = 1;
   for (int k = 0; k < 3; ++k) {
     const double margin =
-        width[k] + 1e-14 * (std::abs(h[k]) + std::abs(v[k]) + std::abs(box.lo[k]) +
-                            std::abs(box.hi[k])) +
+        width[k] +
+        1e-14 * (std::abs(h[k]) + std::abs(v[k]) + std::abs(box.lo[k]) + std::abs(box.hi[k])) +
         1e-300;
     lo[k] = box.lo[k] + margin;
     hi[k] = box.hi[k] - margin;

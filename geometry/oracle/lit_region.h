@@ -43,8 +43,8 @@ class LitRegions {
   /// box around `h_box` (a 32nd, then a 256th, of H's distance to the
   /// light, each way) and keeps the first whose filter passes over every
   /// other polygon, in place of the oldest region.
-  void learn(const SceneIndex& index, std::uint32_t light, const SurfaceHit& hit,
-             const Box& h_box, std::span<const LightPiece> pieces, std::span<const Vec3> vertices,
+  void learn(const SceneIndex& index, std::uint32_t light, const SurfaceHit& hit, const Box& h_box,
+             std::span<const LightPiece> pieces, std::span<const Vec3> vertices,
              const HitPlane& hit_plane);
 
  private:
