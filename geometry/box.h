@@ -25,6 +25,21 @@ struct Box {
   bool empty() const { return lo.x > hi.x; }
 };
 
+/// Whether the closed boxes a and b do not meet: apart along some axis
+/// (exact comparisons of doubles).
+inline bool strictly_apart(const Box& a, const Box& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return true;
+  return false;
+}
+
+/// Whether the closed box `outer` holds all of `inner`.
+inline bool holds(const Box& outer, const Box& inner) {
+  for (int k = 0; k < 3; ++k)
+    if (inner.lo[k] < outer.lo[k] || inner.hi[k] > outer.hi[k]) return false;
+  return true;
+}
+
 /// Every model's vertices (shadow-casting or not), the eye (when the scene
 /// has a camera) and the point lights: eye segments to any surface point,
 /// and every point a volume must clear, run inside it.

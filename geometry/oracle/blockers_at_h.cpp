@@ -8,12 +8,6 @@ namespace {
 
 HPoint at(const Vec3& v) { return HPoint::point(v); }
 
-bool strictly_apart(const Box& a, const Box& b) {
-  for (int k = 0; k < 3; ++k)
-    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return true;
-  return false;
-}
-
 }  // namespace
 
 void triangles_at(const SceneIndex& index, std::span<const std::uint32_t> candidates,

@@ -26,6 +26,28 @@ struct Grid {
   std::size_t at(int i, int j, int k) const {
     return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i;
   }
+  std::array<int, 3> coords(std::size_t c) const {
+    return {static_cast<int>(c % n[0]), static_cast<int>(c / n[0] % n[1]),
+            static_cast<int>(c / (static_cast<std::size_t>(n[0]) * n[1]))};
+  }
+  /// Calls f with the index of each face neighbour of cell c in the grid;
+  /// returns whether c lies on the grid's border (a neighbour is missing).
+  template <class F>
+  bool neighbours(std::size_t c, const F& f) const {
+    const std::array<int, 3> at_c = coords(c);
+    bool border = false;
+    for (int k = 0; k < 3; ++k)
+      for (const int step : {-1, 1}) {
+        std::array<int, 3> d = at_c;
+        d[k] += step;
+        if (d[k] < 0 || d[k] >= n[k]) {
+          border = true;
+          continue;
+        }
+        f(at(d[0], d[1], d[2]));
+      }
+    return border;
+  }
   Box cell_box(int i0, int j0, int k0, int i1, int j1, int k1) const {
     Box b;
     b.lo = {bounds[0][i0], bounds[1][j0], bounds[2][k0]};
@@ -147,82 +169,58 @@ std::vector<Box> shell_inner_boxes(const SceneIndex& index, const ShellTable& ta
   // grid's border lies outside (winding 0 beyond the shell's box); any
   // other is tested at one cell's centre.
   std::vector<std::uint8_t> in(g.size(), 0);
-  std::vector<std::int32_t> component(g.size(), -1);
-  std::vector<std::array<int, 3>> stack, members_of;
-  std::int32_t next = 0;
-  for (int k0 = 0; k0 < g.n[2]; ++k0)
-    for (int j0 = 0; j0 < g.n[1]; ++j0)
-      for (int i0 = 0; i0 < g.n[0]; ++i0) {
-        if (touched[g.at(i0, j0, k0)] || component[g.at(i0, j0, k0)] >= 0) continue;
-        bool border = false;
-        members_of.clear();
-        stack.assign(1, {i0, j0, k0});
-        component[g.at(i0, j0, k0)] = next;
-        while (!stack.empty()) {
-          const std::array<int, 3> c = stack.back();
-          stack.pop_back();
-          members_of.push_back(c);
-          for (int k = 0; k < 3; ++k) border = border || c[k] == 0 || c[k] == g.n[k] - 1;
-          for (int k = 0; k < 3; ++k)
-            for (const int step : {-1, 1}) {
-              std::array<int, 3> d = c;
-              d[k] += step;
-              if (d[k] < 0 || d[k] >= g.n[k]) continue;
-              const std::size_t at = g.at(d[0], d[1], d[2]);
-              if (touched[at] || component[at] >= 0) continue;
-              component[at] = next;
-              stack.push_back(d);
-            }
-        }
-        ++next;
-        if (border) continue;
-        const std::array<int, 3>& c = members_of.front();
-        const Box cell = g.cell_box(c[0], c[1], c[2], c[0], c[1], c[2]);
-        if (!inside(index, table, shell, cell.centre())) continue;
-        for (const std::array<int, 3>& m : members_of) in[g.at(m[0], m[1], m[2])] = 1;
-      }
+  std::vector<std::uint8_t> reached(g.size(), 0);
+  std::vector<std::size_t> stack, members_of;
+  for (std::size_t first = 0; first < g.size(); ++first) {
+    if (touched[first] || reached[first]) continue;
+    bool border = false;
+    members_of.clear();
+    stack.assign(1, first);
+    reached[first] = 1;
+    while (!stack.empty()) {
+      const std::size_t c = stack.back();
+      stack.pop_back();
+      members_of.push_back(c);
+      const bool at_border = g.neighbours(c, [&](std::size_t d) {
+        if (touched[d] || reached[d]) return;
+        reached[d] = 1;
+        stack.push_back(d);
+      });
+      border = border || at_border;
+    }
+    if (border) continue;
+    const std::array<int, 3> c = g.coords(members_of.front());
+    const Box cell = g.cell_box(c[0], c[1], c[2], c[0], c[1], c[2]);
+    if (!inside(index, table, shell, cell.centre())) continue;
+    for (const std::size_t m : members_of) in[m] = 1;
+  }
   // Boxes grown from the deepest inside cells first (the farthest, in
   // steps of face neighbours, from any cell not inside), each as far as
   // inside cells allow along one axis both ways, then the next, then the
   // last, in three axis orders; overlapping freely. A seed is taken only
   // while no box so far holds it.
-  std::vector<int> depth(g.size(), 0);
+  std::vector<int> depth(g.size(), 0);  // 0: not inside; -1: not reached yet
   std::vector<std::size_t> frontier, deeper;
   for (std::size_t c = 0; c < g.size(); ++c)
-    if (in[c]) depth[c] = -1;  // unknown yet
-  for (int k = 0; k < g.n[2]; ++k)
-    for (int j = 0; j < g.n[1]; ++j)
-      for (int i = 0; i < g.n[0]; ++i) {
-        const std::size_t c = g.at(i, j, k);
-        if (depth[c] != -1) continue;
-        bool edge =
-            i == 0 || j == 0 || k == 0 || i == g.n[0] - 1 || j == g.n[1] - 1 || k == g.n[2] - 1;
-        for (const std::size_t d :
-             {g.at(std::max(i - 1, 0), j, k), g.at(std::min(i + 1, g.n[0] - 1), j, k),
-              g.at(i, std::max(j - 1, 0), k), g.at(i, std::min(j + 1, g.n[1] - 1), k),
-              g.at(i, j, std::max(k - 1, 0)), g.at(i, j, std::min(k + 1, g.n[2] - 1))})
-          edge = edge || !in[d];
-        if (edge) {
-          depth[c] = 1;
-          frontier.push_back(c);
-        }
-      }
+    if (in[c]) depth[c] = -1;
+  for (std::size_t c = 0; c < g.size(); ++c) {
+    if (depth[c] != -1) continue;
+    bool beside_outside = false;
+    const bool at_border =
+        g.neighbours(c, [&](std::size_t d) { beside_outside = beside_outside || !in[d]; });
+    if (at_border || beside_outside) {
+      depth[c] = 1;
+      frontier.push_back(c);
+    }
+  }
   for (int level = 2; !frontier.empty(); ++level) {
     deeper.clear();
-    for (const std::size_t c : frontier) {
-      const int i = static_cast<int>(c % g.n[0]), j = static_cast<int>(c / g.n[0] % g.n[1]),
-                k = static_cast<int>(c / (static_cast<std::size_t>(g.n[0]) * g.n[1]));
-      for (const std::array<int, 3>& d :
-           {std::array{i - 1, j, k}, std::array{i + 1, j, k}, std::array{i, j - 1, k},
-            std::array{i, j + 1, k}, std::array{i, j, k - 1}, std::array{i, j, k + 1}}) {
-        if (d[0] < 0 || d[1] < 0 || d[2] < 0 || d[0] >= g.n[0] || d[1] >= g.n[1] || d[2] >= g.n[2])
-          continue;
-        const std::size_t at = g.at(d[0], d[1], d[2]);
-        if (depth[at] != -1) continue;
-        depth[at] = level;
-        deeper.push_back(at);
-      }
-    }
+    for (const std::size_t c : frontier)
+      g.neighbours(c, [&](std::size_t d) {
+        if (depth[d] != -1) return;
+        depth[d] = level;
+        deeper.push_back(d);
+      });
     frontier.swap(deeper);
   }
   std::vector<std::size_t> seeds;
@@ -234,9 +232,7 @@ std::vector<Box> shell_inner_boxes(const SceneIndex& index, const ShellTable& ta
   std::vector<Box> boxes;
   for (const std::size_t seed : seeds) {
     if (held[seed] || boxes.size() >= kBoxesPerShell) continue;
-    const std::array<int, 3> c{
-        static_cast<int>(seed % g.n[0]), static_cast<int>(seed / g.n[0] % g.n[1]),
-        static_cast<int>(seed / (static_cast<std::size_t>(g.n[0]) * g.n[1]))};
+    const std::array<int, 3> c = g.coords(seed);
     for (const std::array<int, 3>& order :
          {std::array{0, 1, 2}, std::array{1, 2, 0}, std::array{2, 0, 1}}) {
       std::array<int, 3> lo = c, hi = c;
@@ -288,12 +284,6 @@ void add_inner_boxes(const SceneIndex& index, ShellTable& table, int cells,
 
 namespace soft {
 namespace {
-
-bool strictly_apart(const Box& a, const Box& b) {
-  for (int k = 0; k < 3; ++k)
-    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return true;
-  return false;
-}
 
 /// Whether the segment from H (within `width` of `h`, per coordinate) to
 /// v certainly passes through the interior of `box`: a point of it, made

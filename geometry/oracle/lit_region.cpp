@@ -5,15 +5,6 @@
 #include <vector>
 
 namespace umbra::geometry::soft {
-namespace {
-
-bool holds(const Box& outer, const Box& inner) {
-  for (int k = 0; k < 3; ++k)
-    if (inner.lo[k] < outer.lo[k] || inner.hi[k] > outer.hi[k]) return false;
-  return true;
-}
-
-}  // namespace
 
 const PyramidFilter* LitRegions::find(const SceneIndex& index, std::uint32_t light,
                                       const SurfaceHit& hit, const Box& h_box) const {

@@ -153,9 +153,7 @@ bool PyramidFilter::all_outside(const std::array<Vec3, K>& corners) const {
 bool PyramidFilter::misses(const std::array<Vec3, 3>& t) const { return all_outside(t); }
 
 bool PyramidFilter::misses(const Box& b) const {
-  // Exact comparisons of doubles: the pyramids lie in reach_.
-  for (int k = 0; k < 3; ++k)
-    if (b.hi[k] < reach_.lo[k] || reach_.hi[k] < b.lo[k]) return true;
+  if (strictly_apart(b, reach_)) return true;  // the pyramids lie in reach_
   // Every corner outside a plane when the one farthest along its normal is
   // (the midpoint plane's value is largest there): in the constant form
   // with the one margin, in the local form with the bound taken at the
