@@ -46,6 +46,14 @@ bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
 SphereTable::SphereTable(std::span<const RasterPolygon> surfaces,
                          std::span<const geometry::Light> lights)
     : lights_(lights) {
+  // Only a point light with a reach asks the table (out_of_range below):
+  // without one, no shapes and no cells, and `at` answers inside. A frame
+  // of 89k surfaces spent 1.5 % of its instructions, and more of its time
+  // in fresh pages, copying vertices nobody read.
+  if (std::none_of(lights.begin(), lights.end(), [](const geometry::Light& l) {
+        return l.type == geometry::LightType::point && l.light_end;
+      }))
+    return;
   std::uint32_t count = 0;
   for (const RasterPolygon& p : surfaces)
     if (p.kind == RasterPolygon::Kind::surface) count = std::max(count, p.id + 1);

@@ -48,6 +48,7 @@ class SphereTable {
   SphereTable(std::span<const RasterPolygon> surfaces, std::span<const geometry::Light> lights);
 
   InSphere at(std::uint32_t surface, std::uint32_t light) const {
+    if (!table_) return InSphere::inside;  // no light has a reach
     const std::uint8_t known =
         table_[static_cast<std::size_t>(surface) * lights_.size() + light].load(
             std::memory_order_relaxed);

@@ -35,6 +35,10 @@ bool inside_projected(const std::vector<Vec3>& poly, const Vec3& n, const Vec3& 
   return inside;
 }
 
+/// The vertex after i of a polygon of n: without the integer division of
+/// (i + 1) % n, a dozen of which were a visible part of projecting a triangle.
+std::size_t next(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
+
 struct ClipVertex {
   Vec3 p;
   bool starts_original_edge;  ///< the edge to the next vertex lies on an original edge...
@@ -98,21 +102,30 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   // part of it.
   thread_local std::vector<Vec3> p;
   p.resize(count);
-  double max_world = 0, max_camera = 0, reach = 0;
+  // Largest squares first, one square root each after: the same doubles as
+  // the largest roots (a correctly rounded root is monotone).
+  double max_world2 = 0, max_camera2 = 0, reach2 = 0;
   for (std::size_t i = 0; i < count; ++i) {
     p[i] = camera.to_camera(w[i]);
-    max_world = std::max(max_world, length(w[i]));
-    max_camera = std::max(max_camera, length(p[i]));
-    reach = std::max(reach, length(frame.eye - w[i]));
+    max_world2 = std::max(max_world2, dot(w[i], w[i]));
+    max_camera2 = std::max(max_camera2, dot(p[i], p[i]));
+    const Vec3 to_eye = frame.eye - w[i];
+    reach2 = std::max(reach2, dot(to_eye, to_eye));
   }
-  out.mag = max_world + length(frame.eye) + max_camera;
+  const double reach = std::sqrt(reach2);
+  out.mag = std::sqrt(max_world2) + length(frame.eye) + std::sqrt(max_camera2);
   out.p0 = p[0];
   Vec3 n{}, n_world{};
   for (std::size_t i = 1; i + 1 < count; ++i) {
     n = n + cross(p[i] - p[0], p[i + 1] - p[0]);
     n_world = n_world + cross(w[i] - w[0], w[i + 1] - w[0]);
   }
-  for (std::size_t i = 1; i < count; ++i) out.size = std::max(out.size, length(p[i] - p[0]));
+  double size2 = 0;
+  for (std::size_t i = 1; i < count; ++i) {
+    const Vec3 side = p[i] - p[0];
+    size2 = std::max(size2, dot(side, side));
+  }
+  out.size = std::sqrt(size2);
   out.n = n;
   out.n_length = length(n);
   out.n_dot_p0 = dot(n, p[0]);
@@ -148,7 +161,7 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   // clipping at z_near loses nothing any pixel sees.
   const double radius = camera.near_radius;
   for (std::size_t i = 0; i < count && !out.near_eye; ++i)
-    out.near_eye = origin_segment_distance(p[i], p[(i + 1) % count]) <= radius;
+    out.near_eye = origin_segment_distance(p[i], p[next(i, count)]) <= radius;
   if (!out.near_eye && out.n_length > 0 && std::abs(out.n_dot_p0) <= radius * out.n_length) {
     const Vec3 foot = (out.n_dot_p0 / dot(n, n)) * n;  // the eye's projection on the plane
     out.near_eye = inside_projected(p, n, foot);
@@ -161,7 +174,7 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   const double z_near = camera.z_near;
   for (std::size_t i = 0; i < count; ++i) {
     const Vec3& a = p[i];
-    const Vec3& b = p[(i + 1) % count];
+    const Vec3& b = p[next(i, count)];
     const bool a_in = a.z >= z_near, b_in = b.z >= z_near;
     const auto crossing = [&] {
       const double lambda = (z_near - a.z) / (b.z - a.z);
@@ -205,12 +218,12 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
 
   if (room.size() < m) throw std::logic_error("project_polygon: no room for the clipped edges");
   for (std::size_t k = 0; k < m; ++k) {
-    const std::size_t k1 = (k + 1) % m;
+    const std::size_t k1 = next(k, m);
     ProjectedEdge e;
     Vec3 pa, pb;
     if (clipped[k].starts_original_edge) {
       pa = p[clipped[k].original_edge];
-      pb = p[(clipped[k].original_edge + 1) % count];
+      pb = p[next(clipped[k].original_edge, count)];
     } else {
       pa = clipped[k].p;
       pb = clipped[k1].p;

@@ -64,6 +64,10 @@ SurfaceEntry surface_entry(const geometry::SceneIndex& index, const geometry::Su
 SurfaceTable surface_table(const geometry::SceneIndex& index) {
   SurfaceTable table;
   const auto polygons = index.polygons();
+  // One entry a polygon but for non-planar ones (a few): room made once,
+  // where growing by doubling moved every polygon made so far.
+  table.entries.reserve(polygons.size());
+  table.polygons.reserve(polygons.size());
   for (std::uint32_t i = 0; i < polygons.size(); ++i) {
     const geometry::IndexedPolygon& p = polygons[i];
     const auto add = [&](std::uint32_t triangle, std::vector<Vec3> vertices) {

@@ -60,6 +60,13 @@ TEST(SphereOfInfluence, UnlimitedAndDirectionalLightsReachEverything) {
   const SphereTable table(surfaces, lights);
   EXPECT_EQ(table.at(0, 0), InSphere::inside);
   EXPECT_EQ(table.at(0, 1), InSphere::inside);
+  // Beside a light with a reach (the table is only made for one), the
+  // same answers, and the limited light's own.
+  const std::vector<geometry::Light> mixed = {unlimited, limited(1), sun};
+  const SphereTable with_reach(surfaces, mixed);
+  EXPECT_EQ(with_reach.at(0, 0), InSphere::inside);
+  EXPECT_EQ(with_reach.at(0, 1), InSphere::outside);
+  EXPECT_EQ(with_reach.at(0, 2), InSphere::inside);
 }
 
 TEST(SphereOfInfluence, ShadowPolygonsAreIgnored) {
