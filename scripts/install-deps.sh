@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools
-  nlohmann-json3-dev libsimdjson-dev libcli11-dev libtinygltf-dev libfmt-dev libtbb-dev
+  nlohmann-json3-dev libsimdjson-dev libcli11-dev libtinygltf-dev libfmt-dev libtbb-dev libmimalloc-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels libassimp-dev libcgal-demo
   clang-14 libclang-rt-14-dev clang-format-14

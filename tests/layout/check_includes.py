@@ -17,7 +17,8 @@ the project; the libraries' headers by their installed names,
   loaded on the first image read or written), Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
-  alone, pybind11 by python/ alone.
+  alone, pybind11 by python/ alone, mimalloc by cli/heap.cpp alone (the
+  program's allocator; the libraries keep the system's).
 - cmake/internal-headers.txt lists exactly the libraries' headers that reach
   a private dependency (CGAL, GMP, OpenMesh, fmt, ...): those are not
   installed, every other header is (cmake/umbra_install.cmake).
@@ -92,6 +93,7 @@ ONLY_IN = [
     ("proj.h", ("geometry/export/geodetic_frame.cpp",)),
     ("proj/", ("geometry/export/geodetic_frame.cpp",)),
     ("pybind11/", ("python/",)),
+    ("mimalloc", ("cli/heap.cpp",)),
 ]
 
 violations = []
