@@ -89,9 +89,9 @@ InSphere SphereTable::classify(std::uint32_t surface, std::uint32_t light) const
   return r;
 }
 
-bool SphereTable::out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
-                               const geometry::SampleRay& ray,
-                               const geometry::HitTriangle& tri) const {
+bool SphereTable::limited_out_of_range(std::uint32_t surface, std::uint32_t l,
+                                       const geometry::Light& light, const geometry::SampleRay& ray,
+                                       const geometry::HitTriangle& tri) const {
   if (light.dark) return true;  // a sun below the horizon reaches nothing
   if (light.type != geometry::LightType::point) return false;  // no reach
   // The sphere from the table; where it cuts the surface, and for a spot's

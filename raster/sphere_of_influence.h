@@ -58,8 +58,14 @@ class SphereTable {
   /// Whether the sample of `ray` on `tri`, a triangle of surface `surface`,
   /// is out of range of `light` (index `l`): from the table, and with the
   /// exact predicate only where the sphere cuts the surface.
+  /// Inline for the lights that reach everywhere (lit, no reach, no cone):
+  /// the renderer asks for every (pixel, light) pair, and the call alone
+  /// was 3 % of a 16-light frame.
   bool out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
-                    const geometry::SampleRay& ray, const geometry::HitTriangle& tri) const;
+                    const geometry::SampleRay& ray, const geometry::HitTriangle& tri) const {
+    if (!light.dark && !light.light_end && !light.spot) return false;
+    return limited_out_of_range(surface, l, light, ray, tri);
+  }
 
  private:
   struct Shape {
@@ -68,6 +74,9 @@ class SphereTable {
   };
   /// The pair's class, computed and kept (its first query).
   InSphere classify(std::uint32_t surface, std::uint32_t light) const;
+  /// out_of_range for a dark light or one with a reach or a cone.
+  bool limited_out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
+                            const geometry::SampleRay& ray, const geometry::HitTriangle& tri) const;
 
   std::span<const geometry::Light> lights_;
   std::vector<Shape> shapes_;  ///< by surface id
