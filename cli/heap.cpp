@@ -10,7 +10,7 @@
 #if defined(UMBRA_MIMALLOC)
 #include <mimalloc.h>
 
-#include <cstdlib>
+#include <string_view>
 #endif
 
 namespace umbra::cli {
@@ -26,9 +26,14 @@ namespace {
 /// 15k of the 24k faults. So it is set here, from the program's
 /// .preinit_array, which runs once everything is loaded and relocated and
 /// before any initialiser; mi_option_set only stores the value. A user's
-/// own MIMALLOC_LARGE_OS_PAGES wins (getenv allocates nothing).
-void enable_large_os_pages(int, char**, char**) {
-  if (std::getenv("MIMALLOC_LARGE_OS_PAGES") == nullptr) mi_option_enable(mi_option_large_os_pages);
+/// own MIMALLOC_LARGE_OS_PAGES wins. It is looked up in `env`, the array
+/// the loader hands over: libc's getenv has no environment yet this early
+/// (its own initialiser sets it), and found nothing.
+void enable_large_os_pages(int, char**, char** env) {
+  constexpr std::string_view kName = "MIMALLOC_LARGE_OS_PAGES=";
+  for (char** e = env; e != nullptr && *e != nullptr; ++e)
+    if (std::string_view(*e).starts_with(kName)) return;
+  mi_option_enable(mi_option_large_os_pages);
 }
 
 __attribute__((section(".preinit_array"),
