@@ -1,7 +1,7 @@
 // The `umbra` program's heap. A render allocates its tables afresh (89k
 // surfaces' polygons, edges and index: about 100 MB for refined_elephant),
 // and with 4 KiB pages each first touch is a page fault: 24k of them, a
-// quarter of a whole `umbra render` on this kind of VM. Linked with
+// fifth of a whole `umbra render` on this kind of VM. Linked with
 // mimalloc (cmake/umbra_dependencies.cmake), the program asks for its heap
 // in transparent huge pages: 6k faults. The libraries keep the system's
 // malloc; only this program chooses. Nothing calls this file: it sets the

@@ -31,7 +31,7 @@ foreach(_dir IN LISTS _oiio_includes)
 endforeach()
 set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_existing}")
 find_package(TBB REQUIRED)
-# The `umbra` executable's allocator (cli/heap.h): mimalloc, its heap in
+# The `umbra` executable's allocator (cli/heap.cpp): mimalloc, its heap in
 # transparent huge pages. Not under sanitizers, which replace malloc.
 if(NOT UMBRA_SANITIZE AND NOT UMBRA_FUZZ)
   find_package(mimalloc 2 CONFIG REQUIRED)

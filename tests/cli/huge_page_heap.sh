@@ -13,7 +13,7 @@ option() {
   env "$@" MIMALLOC_VERBOSE=1 "$umbra" --version 2>&1 >/dev/null |
     sed -n "s/^mimalloc: option 'large_os_pages': \([0-9]*\)$/\1/p"
 }
-got=$(option)
+got=$(option -u MIMALLOC_LARGE_OS_PAGES)
 [ "$got" = 1 ] || { echo "unset: large_os_pages '$got', expected 1"; fail=1; }
 got=$(option MIMALLOC_LARGE_OS_PAGES=0)
 [ "$got" = 0 ] || { echo "MIMALLOC_LARGE_OS_PAGES=0: large_os_pages '$got', expected 0"; fail=1; }
