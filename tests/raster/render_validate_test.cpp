@@ -123,6 +123,23 @@ TEST(Render, DegenerateSceneRecountsItsLightsExactly) {
   EXPECT_GT(report.lights[0].boundary + report.lights[1].boundary, 1000u);
 }
 
+// The same with every light unlimited: every window is the whole image,
+// and the renderer reads those lights' counts on its short path
+// (volume_method.cpp, by_count), which must still send a pixel whose
+// count is in doubt to the exact recount.
+TEST(Render, UnlimitedLightsInDoubtAreRecountedToo) {
+  geometry::Scene scene =
+      geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/degenerate.json");
+  for (geometry::Light& light : scene.lights) light.light_end.reset();
+  RenderStats stats;
+  const Frame frame = render(scene, {.method = Method::volume, .threads = 2}, &stats);
+  ASSERT_TRUE(frame.windows.all_whole());
+  EXPECT_GT(stats.exact_light_recounts, 1000u);
+  const ValidationReport report =
+      validate_render(scene, channels_of(frame), {.samples = {}, .seed = 1, .threads = 2});
+  EXPECT_EQ(report.total_mismatches(), 0u);
+}
+
 TEST(Render, WithoutShadowsEveryLightReachesEverySampleInRange) {
   const geometry::Scene scene =
       geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/two_lights.json");
