@@ -29,6 +29,13 @@ namespace umbra::raster {
 bool out_of_range(const geometry::Light& light, const geometry::SampleRay& ray,
                   const geometry::HitTriangle& tri);
 
+/// A light that is never out of range of any sample: lit (not a dark
+/// sun), without a reach and without a cone. out_of_range is false for it
+/// without a look at the sample.
+inline bool reaches_everywhere(const geometry::Light& light) {
+  return !light.dark && !light.light_end && !light.spot;
+}
+
 enum class InSphere : std::uint8_t {
   inside,   ///< every point of the surface is within light_end (or the light is unlimited)
   outside,  ///< every point is beyond light_end
@@ -63,7 +70,7 @@ class SphereTable {
   /// was 3 % of a 16-light frame.
   bool out_of_range(std::uint32_t surface, std::uint32_t l, const geometry::Light& light,
                     const geometry::SampleRay& ray, const geometry::HitTriangle& tri) const {
-    if (!light.dark && !light.light_end && !light.spot) return false;
+    if (reaches_everywhere(light)) return false;
     return limited_out_of_range(surface, l, light, ray, tri);
   }
 

@@ -3,9 +3,9 @@
 // input vertices (certified_fraction.cpp): within one call H and the
 // light's plane are fixed, so an input vertex projects to the same two
 // intervals for every blocker it is a corner of (~6 in a closed mesh).
+#include <umbra/geometry/io/position_welder.h>
 #include <umbra/geometry/oracle/interval_clip.h>
 
-#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -32,52 +32,40 @@ class ProjectedVertices {
   /// v's projection: the one kept, else make()'s, kept.
   template <class Make>
   std::pair<Interval, Interval> get(const Vec3& v, const Make& make) {
+    const PositionKey key = position_key(v);
     std::pair<Interval, Interval> y{Interval(0), Interval(0)};
-    if (find(v, y)) return y;
+    if (find(key, y)) return y;
     y = make();
-    put(v, y);
+    put(key, y);
     return y;
   }
 
  private:
-  bool find(const Vec3& v, std::pair<Interval, Interval>& out) const {
-    for (std::size_t i = hash(v) & mask_;; i = (i + 1) & mask_) {
+  std::size_t first_slot(const PositionKey& key) const { return mask_ & PositionKeyHash{}(key); }
+  bool find(const PositionKey& key, std::pair<Interval, Interval>& out) const {
+    for (std::size_t i = first_slot(key);; i = (i + 1) & mask_) {
       const Slot& s = slots_[i];
       if (s.generation != generation_) return false;
-      if (same(s.v, v)) {
+      if (s.key == key) {
         out = s.y;
         return true;
       }
     }
   }
-  void put(const Vec3& v, const std::pair<Interval, Interval>& y) {
-    for (std::size_t i = hash(v) & mask_;; i = (i + 1) & mask_) {
+  void put(const PositionKey& key, const std::pair<Interval, Interval>& y) {
+    for (std::size_t i = first_slot(key);; i = (i + 1) & mask_) {
       Slot& s = slots_[i];
       if (s.generation == generation_) continue;
-      s = {v, y, generation_};
+      s = {key, y, generation_};
       return;
     }
   }
 
   struct Slot {
-    Vec3 v;
+    PositionKey key;  ///< the vertex's bits (-0 and +0 apart: the same projection either way)
     std::pair<Interval, Interval> y{Interval(0), Interval(0)};
     std::uint64_t generation = 0;
   };
-  /// The same bits (-0 and +0 apart: either way the same projection).
-  static bool same(const Vec3& a, const Vec3& b) {
-    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
-           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
-  }
-  static std::size_t hash(const Vec3& v) {
-    std::uint64_t h = 14695981039346656037ull;
-    for (const double x : {v.x, v.y, v.z}) {
-      h ^= std::bit_cast<std::uint64_t>(x);
-      h *= 1099511628211ull;
-    }
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
   std::vector<Slot> slots_;
   std::size_t mask_ = 0;
   std::uint64_t generation_ = 0;

@@ -228,6 +228,13 @@ Frame render_volume(const geometry::SceneIndex& index,
     sample.counts[k] = total;
     sample.classes[k] = class_of_count(total, pixel, l);
   };
+  // The lights whose count alone decides every sample: hard, with a count
+  // at the eye, reaching everywhere. Their pairs skip the three tests
+  // below that could only pass them on (most of a 16-light frame's loop);
+  // the doubt test and the count are the same for every light.
+  std::vector<std::uint8_t> by_count(lights);
+  for (std::uint32_t l = 0; l < lights; ++l)
+    by_count[l] = !frame.is_soft(l) && !eye.degenerate[l] && reaches_everywhere(scene.lights[l]);
   progress.phase("shading", static_cast<std::uint64_t>(rows.size()));
   for_each_row(rows, options.threads, [&](int j) {
     // The lights whose window holds each pixel: no other light's sample
@@ -240,25 +247,13 @@ Frame render_volume(const geometry::SceneIndex& index,
     // With every window whole, light k's count of the row's pixel i is at
     // row_slot[k] + i: its place worked out once a row, not once a pixel.
     std::vector<std::size_t> row_slot;
-    // With every window whole, and no tinted model: the lights whose count
-    // alone decides (hard, a count at the eye, no reach, cone or dark sun)
-    // and that count at the eye. Their pairs skip the tests below, which
-    // were most of a 16-light frame's decide loop; the same answers.
-    std::vector<std::uint8_t> by_count;
-    std::vector<int> eye_count;
     if (whole) {
       sample.lights.assign(here.begin(), here.end());
       sample.classes.resize(here.size());
       sample.counts.resize(here.size());
       sample.visibility.resize(here.size());
       sample.tau.resize(here.size());
-      for (const std::uint32_t l : here) {
-        row_slot.push_back(windows.inside(l, 0, j));
-        const geometry::Light& light = scene.lights[l];
-        by_count.push_back(!tinted_frame && !frame.is_soft(l) && !eye.degenerate[l] &&
-                           !light.dark && !light.light_end && !light.spot);
-        eye_count.push_back(channels.eye_count(l));
-      }
+      for (const std::uint32_t l : here) row_slot.push_back(windows.inside(l, 0, j));
     } else {
       sweep.emplace(windows, j);
     }
@@ -286,35 +281,31 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.t = scan.depth[pixel];
         sample.normal = entry.normal;
         sample.look = entry.look;
-        const bool lights_doubt = (doubt & kLightsUncertain) != 0;
         for (std::size_t k = 0; k < sample.lights.size(); ++k) {
           const std::uint32_t l = sample.lights[k];
-          if (whole && by_count[k] && !(lights_doubt && (scan.light_mask[pixel] & light_bit(l)))) {
-            const int count = eye_count[k] + scan.count[row_slot[k] + static_cast<std::size_t>(i)];
-            sample.counts[k] = count;
-            sample.classes[k] = class_of_count(count, pixel, l);
-            continue;
-          }
-          if (frame.is_soft(l)) {
-            // Area lights: V per sample, certified in floating point
-            // (docs/soft-shadows.md, "The volume method's fraction").
-            row_area_exact += decide_area_light(index, ray, entry.hit, k, l,
-                                                geometry::FractionPrecision::certified, sample);
-            continue;
-          }
-          if (eye.degenerate[l]) {
-            // No count at the eye for this light: the oracle decides its
-            // samples, the scanline's answer stands for every other light.
-            decide_by_oracle(index, ray, entry.hit, k, l, frame.tinted, sample);
-            continue;
-          }
-          if (spheres.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray, tri)) {
-            // count.<i> is 0 out of range, as in the exact fallback below.
-            // The scanline's count means nothing there: volumes are cut at
-            // the light's reach without caps, so it may even be negative.
-            sample.classes[k] = ShadowClass::out_of_range;
-            sample.counts[k] = 0;
-            continue;
+          if (!by_count[l]) {
+            if (frame.is_soft(l)) {
+              // Area lights: V per sample, certified in floating point
+              // (docs/soft-shadows.md, "The volume method's fraction").
+              row_area_exact += decide_area_light(index, ray, entry.hit, k, l,
+                                                  geometry::FractionPrecision::certified, sample);
+              continue;
+            }
+            if (eye.degenerate[l]) {
+              // No count at the eye for this light: the oracle decides its
+              // samples, the scanline's answer stands for every other light.
+              decide_by_oracle(index, ray, entry.hit, k, l, frame.tinted, sample);
+              continue;
+            }
+            if (spheres.out_of_range(static_cast<std::uint32_t>(id), l, scene.lights[l], ray,
+                                     tri)) {
+              // count.<i> is 0 out of range, as in the exact fallback below.
+              // The scanline's count means nothing there: volumes are cut at
+              // the light's reach without caps, so it may even be negative.
+              sample.classes[k] = ShadowClass::out_of_range;
+              sample.counts[k] = 0;
+              continue;
+            }
           }
           if ((doubt & kLightsUncertain) &&
               (scan.light_mask[pixel] & (tinted_frame ? channels.bits(l) : light_bit(l)))) {

@@ -124,9 +124,9 @@ TEST(Render, DegenerateSceneRecountsItsLightsExactly) {
 }
 
 // The same with every light unlimited: every window is the whole image,
-// and the renderer reads those lights' counts on its short path
-// (volume_method.cpp, by_count), which must still send a pixel whose
-// count is in doubt to the exact recount.
+// and the renderer skips those lights' soft, eye and range tests
+// (volume_method.cpp, by_count); a pixel whose count is in doubt must
+// still go to the exact recount.
 TEST(Render, UnlimitedLightsInDoubtAreRecountedToo) {
   geometry::Scene scene =
       geometry::load_scene(std::filesystem::path(UMBRA_DATA_DIR) / "scenes/degenerate.json");
