@@ -13,6 +13,7 @@ namespace umbra::cli {
 std::string version_text(const std::string& umbra_version) {
   std::vector<geometry::LibraryVersion> libraries = geometry::geometry_library_versions();
   libraries.push_back(raster::openimageio_version());
+  libraries.push_back(raster::openexr_version());
   libraries.push_back(raster::embree_version());
   libraries.push_back({"oneTBB", TBB_VERSION_STRING, TBB_runtime_version()});
   libraries.push_back({"CLI11", CLI11_VERSION, ""});  // header-only

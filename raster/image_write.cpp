@@ -1,3 +1,4 @@
+#include <umbra/raster/exr_encode.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_write.h>
 #include <umbra/raster/shading.h>
@@ -80,8 +81,13 @@ void write_atomically(const fs::path& path, const codec::Header& header, codec::
       kind_of(path) == ImageKind::png ? codec::Format::png : codec::Format::openexr;
   std::vector<unsigned char> encoded;
   std::string error;
-  if (!codec::functions().encode(format, header, pixels, block_rows, fill, encoded, error))
-    throw util::InputError(path.string(), "cannot write image: " + error);
+  // OpenEXR files without the OpenImageIO module (raster/exr_encode.h):
+  // a render that writes one does not wait for 260 libraries to load.
+  const bool ok =
+      format == codec::Format::openexr && pixels == codec::Pixels::float32
+          ? encode_exr(header, block_rows, fill, encoded, error)
+          : codec::functions().encode(format, header, pixels, block_rows, fill, encoded, error);
+  if (!ok) throw util::InputError(path.string(), "cannot write image: " + error);
   util::write_all_or_nothing(
       path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
