@@ -6,7 +6,6 @@
 #include <cli/render_command.h>
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
-#include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/raster/methods/ikedo_functions.h>
@@ -288,11 +287,6 @@ int run_render(const RenderArgs& args) {
     outputs.push_back({args.stats_json, "--stats-json"});
   }
   check_outputs_distinct({{scene_path, "the input scene"}}, outputs);
-  // With a CPU to spare, the image module loads while the scene loads and
-  // renders; only PNG needs it (OpenEXR files are written without it,
-  // raster/exr_encode.h).
-  std::optional<raster::codec::Preload> codec;
-  if (lowercase_extension(output) == ".png") codec.emplace(args.threads);
 
   RenderTimings timings;
   auto phase = std::chrono::steady_clock::now();

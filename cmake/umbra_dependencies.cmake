@@ -3,6 +3,7 @@ find_package(CGAL REQUIRED)
 find_package(OpenMesh CONFIG REQUIRED)  # CONFIG: CGAL ships a FindOpenMesh that fails here
 find_package(OpenImageIO REQUIRED)
 find_package(OpenEXR CONFIG REQUIRED)  # OpenEXR::OpenEXR and ::OpenEXRCore, PRIVATE to umbra_raster: raster/exr_encode.cpp
+find_package(PNG REQUIRED)  # PNG::PNG, PRIVATE to umbra_raster: raster/png_encode.cpp
 find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(simdjson REQUIRED)  # scene JSON (geometry/io/json_document.h)

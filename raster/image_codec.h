@@ -4,12 +4,12 @@
 // memory, in plain values. Debian's OpenImageIO brings 260 shared libraries;
 // linked into every umbra binary, the dynamic loader spent ~0.6 s of CPU
 // resolving their symbols before main() (issue 20, goal 6). Loaded with
-// dlopen on the first image read or PNG written instead, it costs only the
-// commands that need it: OpenEXR files are written by OpenEXR itself
-// (raster/exr_encode.h), the same bytes without the ~0.3 s load, and the
-// module's OpenEXR writer remains as the reference they are tested against.
-// Internal to raster/: image_io.cpp, image_write.cpp and tile_merge.cpp
-// are its only users, image_codec_loader.cpp loads it.
+// dlopen on the first image read instead, it costs only the commands that
+// read one: images are written by OpenEXR and libpng themselves
+// (raster/exr_encode.h, png_encode.h), the same bytes without the ~0.3 s
+// load, and the module's writers remain as the reference those are tested
+// against. Internal to raster/: image_io.cpp and tile_merge.cpp are its
+// only users, image_codec_loader.cpp loads it.
 #include <functional>
 #include <memory>
 #include <string>
@@ -80,7 +80,7 @@ inline constexpr const char* kEntryPoint = "umbra_image_codec";
 const Functions& functions();
 
 /// Loads the module on a thread of its own while the caller goes on, for a
-/// command that will read or write an image, when its `threads` (0: every
+/// command that will read an image (validate), when its `threads` (0: every
 /// CPU it may use, util::resolve_threads) leave a CPU idle: OpenImageIO
 /// brings in some 270 shared libraries, and the dynamic loader's ~0.3 s
 /// then overlaps the scene's loading and the render instead of following

@@ -1,6 +1,7 @@
 #include <umbra/raster/exr_encode.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_write.h>
+#include <umbra/raster/png_encode.h>
 #include <umbra/raster/shading.h>
 #include <umbra/util/atomic_files.h>
 #include <umbra/util/file_names.h>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -81,12 +83,15 @@ void write_atomically(const fs::path& path, const codec::Header& header, codec::
       kind_of(path) == ImageKind::png ? codec::Format::png : codec::Format::openexr;
   std::vector<unsigned char> encoded;
   std::string error;
-  // OpenEXR files without the OpenImageIO module (raster/exr_encode.h):
-  // a render that writes one does not wait for 260 libraries to load.
-  const bool ok =
-      format == codec::Format::openexr && pixels == codec::Pixels::float32
-          ? encode_exr(header, block_rows, fill, encoded, error)
-          : codec::functions().encode(format, header, pixels, block_rows, fill, encoded, error);
+  // Written without the OpenImageIO module (raster/exr_encode.h,
+  // png_encode.h): a render does not wait for its 260 libraries to load.
+  if (format == codec::Format::openexr && pixels != codec::Pixels::float32)
+    throw std::logic_error("write_atomically: an OpenEXR file is written from floats");
+  if (format == codec::Format::png && pixels != codec::Pixels::uint8)
+    throw std::logic_error("write_atomically: a PNG file is written from bytes");
+  const bool ok = format == codec::Format::openexr
+                      ? encode_exr(header, block_rows, fill, encoded, error)
+                      : encode_png(header, block_rows, fill, encoded, error);
   if (!ok) throw util::InputError(path.string(), "cannot write image: " + error);
   util::write_all_or_nothing(
       path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));

@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev
+  libopenmesh-dev libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   nlohmann-json3-dev libsimdjson-dev libcli11-dev libtinygltf-dev libfmt-dev libtbb-dev libmimalloc-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   assimp-testmodels libassimp-dev libcgal-demo

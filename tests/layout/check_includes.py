@@ -14,7 +14,8 @@ the project; the libraries' headers by their installed names,
 - the Python module (python/) never reaches cli/, fuzz/ or bench/: like the
   CLI, a thin layer over the libraries;
 - OpenImageIO is included by raster/image_codec_oiio.cpp alone (the module
-  loaded on the first image read or written), Embree by
+  loaded on the first image read), OpenEXR by raster/exr_encode.cpp alone,
+  libpng and zlib by raster/png_encode.cpp alone (the writers), Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
   alone, pybind11 by python/ alone, mimalloc by cli/heap.cpp alone (the
@@ -87,6 +88,10 @@ RULES = [
 ]
 ONLY_IN = [
     ("OpenImageIO/", ("raster/image_codec_oiio.cpp",)),
+    ("OpenEXR/", ("raster/exr_encode.cpp",)),
+    ("Imath/", ("raster/exr_encode.cpp",)),
+    ("png.h", ("raster/png_encode.cpp",)),
+    ("zlib.h", ("raster/png_encode.cpp",)),
     ("embree3/", ("raster/methods/",)),
     ("tiny_gltf.h", ("geometry/io/",)),
     ("simdjson.h", ("geometry/io/json_document.h",)),
@@ -119,7 +124,8 @@ for folder in ("util", "geometry", "raster", "cli", "python"):
 # Installed headers reach only the standard library, the system, TBB and
 # other installed headers.
 PRIVATE_DEPENDENCIES = ("CGAL/", "OpenMesh/", "embree3/", "glm/", "fmt/", "nlohmann/", "simdjson",
-                        "tiny_gltf", "proj", "gmp", "OpenImageIO/", "CLI/", "boost/", "pybind11/")
+                        "tiny_gltf", "proj", "gmp", "OpenImageIO/", "CLI/", "boost/", "pybind11/",
+                        "OpenEXR/", "Imath/", "png.h", "zlib.h")
 reaching = set()
 for folder in LIBRARIES:
     for src in sources(folder):
