@@ -7,6 +7,7 @@
 #include <csetjmp>
 #include <cstdint>
 #include <cstdio>
+#include <new>
 #include <string>
 
 namespace umbra::raster {
@@ -21,7 +22,15 @@ struct Sink {
 
 void append(png_structp png, png_bytep data, png_size_t n) {
   auto* sink = static_cast<Sink*>(png_get_io_ptr(png));
-  sink->bytes->insert(sink->bytes->end(), data, data + n);
+  // No C++ exception may cross libpng's C frames: out of memory becomes
+  // libpng's own error (its longjmp, outside the handler).
+  bool stored = true;
+  try {
+    sink->bytes->insert(sink->bytes->end(), data, data + n);
+  } catch (const std::bad_alloc&) {
+    stored = false;
+  }
+  if (!stored) png_error(png, "out of memory for the encoded image");
 }
 
 void no_flush(png_structp) {}
