@@ -6,7 +6,6 @@
 #include <cli/scene_loading.h>
 #include <cli/stats_json.h>
 #include <cli/validate_command.h>
-#include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/memory_estimate.h>
 #include <umbra/raster/validate.h>
@@ -166,8 +165,6 @@ int run_validate(const ValidateArgs& args) {
   const std::vector<NamedFile> inputs = {{args.scene, "the input scene"},
                                          {image, "the image to validate"}};
   check_outputs_distinct(inputs, outputs);
-  // With a CPU to spare, the image module loads while the scene loads and the truth is made.
-  const raster::codec::Preload codec(args.threads);
   const auto start = std::chrono::steady_clock::now();
   auto phase = start;
   const auto lap = [&phase] {

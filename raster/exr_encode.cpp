@@ -1,6 +1,6 @@
 #include <umbra/raster/exr_encode.h>
+#include <umbra/raster/exr_thread_pool.h>
 #include <umbra/raster/library_versions.h>
-#include <umbra/util/cpu_budget.h>
 
 #include <OpenEXR/IexBaseExc.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -10,14 +10,12 @@
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <OpenEXR/ImfThreading.h>
 #include <OpenEXR/OpenEXRConfig.h>
 #include <OpenEXR/openexr_base.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <mutex>
 #include <string>
 
 namespace umbra::raster {
@@ -106,11 +104,7 @@ bool encode_exr(const codec::Header& header, int block_rows, const codec::FillRo
     error = "an OpenEXR image needs a positive size";
     return false;
   }
-  // OpenEXR compresses blocks of lines on its global thread pool; as many
-  // threads as the module's OpenImageIO gave it (every usable CPU). The
-  // bytes do not depend on the count.
-  static std::once_flag pool;
-  std::call_once(pool, [] { Imf::setGlobalThreadCount(static_cast<int>(util::usable_cpus())); });
+  detail::start_exr_thread_pool();
   try {
     Imf::Header exr;
     if (!exr_header(header, exr, error)) return false;

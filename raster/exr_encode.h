@@ -6,8 +6,8 @@
 // own ten load in ~6 ms. The files are byte for byte what the module wrote
 // (same library, same header attributes, same zip level), which
 // tests/raster/exr_encode_test.cpp checks against the module's writer.
-// PNG files are written by raster/png_encode.h; reads still go through the
-// module.
+// PNG files are written by raster/png_encode.h, OpenEXR files read by
+// raster/exr_decode.h.
 #include <umbra/raster/image_codec.h>
 
 #include <string>

@@ -3,18 +3,18 @@
 // built as libumbra_image_codec.so): images encoded to and decoded from
 // memory, in plain values. Debian's OpenImageIO brings 260 shared libraries;
 // linked into every umbra binary, the dynamic loader spent ~0.6 s of CPU
-// resolving their symbols before main() (issue 20, goal 6). Loaded with
-// dlopen on the first image read instead, it costs only the commands that
-// read one: images are written by OpenEXR and libpng themselves
-// (raster/exr_encode.h, png_encode.h), the same bytes without the ~0.3 s
-// load, and the module's writers remain as the reference those are tested
-// against. Internal to raster/: image_io.cpp and tile_merge.cpp are its
-// only users, image_codec_loader.cpp loads it.
+// resolving their symbols before main() (issue 20, goal 6). Then it was
+// loaded with dlopen on the first image read or written; since 2026-12-07
+// umbra reads and writes OpenEXR and PNG with OpenEXR and libpng directly
+// (raster/exr_decode.h, exr_encode.h, png_encode.h: the same bytes and
+// values, without the ~0.3 s load), and the module is what the tests read
+// and write with to check them, an implementation independent of umbra's
+// own use of those libraries, and what `umbra --version` asks for
+// OpenImageIO's version. image_codec_loader.cpp loads it.
 #include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -78,25 +78,5 @@ inline constexpr const char* kEntryPoint = "umbra_image_codec";
 /// The module, loaded on first use (thread-safe). Throws std::runtime_error
 /// naming the paths tried when it cannot be loaded: an installation fault.
 const Functions& functions();
-
-/// Loads the module on a thread of its own while the caller goes on, for a
-/// command that will read an image (validate), when its `threads` (0: every
-/// CPU it may use, util::resolve_threads) leave a CPU idle: OpenImageIO
-/// brings in some 270 shared libraries, and the dynamic loader's ~0.3 s
-/// then overlaps the scene's loading and the render instead of following
-/// them. Nothing when every CPU renders: the loader's page faults then
-/// contend with the render's (measured slower). Waits for the thread when
-/// destroyed. A failure is not reported here: functions() tries again, and
-/// throws, where the image is read or written.
-class Preload {
- public:
-  explicit Preload(unsigned threads);
-  ~Preload();
-  Preload(const Preload&) = delete;
-  Preload& operator=(const Preload&) = delete;
-
- private:
-  std::thread thread_;  ///< not joinable when nothing was started
-};
 
 }  // namespace umbra::raster::codec

@@ -8,7 +8,6 @@
 // unloaded: OpenImageIO keeps threads and caches that outlive any point
 // where dlclose would be safe.
 #include <umbra/raster/image_codec.h>
-#include <umbra/util/cpu_budget.h>
 
 #include <dlfcn.h>
 
@@ -77,20 +76,6 @@ const Functions& functions() {
   static const Functions* loaded = nullptr;
   std::call_once(once, [] { loaded = load(); });
   return *loaded;
-}
-
-Preload::Preload(unsigned threads) {
-  if (util::resolve_threads(threads) >= util::usable_cpus()) return;
-  thread_ = std::thread([] {
-    try {
-      functions();
-    } catch (...) {  // reported by the caller's own call, where it reads or writes
-    }
-  });
-}
-
-Preload::~Preload() {
-  if (thread_.joinable()) thread_.join();
 }
 
 }  // namespace umbra::raster::codec

@@ -1,3 +1,4 @@
+#include <umbra/raster/exr_decode.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
@@ -180,7 +181,7 @@ ShadowChannels decode_shadow_channels(std::string_view bytes, const fs::path& na
                            format, named_exr ? ", not the OpenEXR its name says" : ""));
   }
   std::string error;
-  const std::unique_ptr<codec::Reader> in = codec::functions().open_exr(bytes, where, error);
+  const std::unique_ptr<codec::Reader> in = open_exr(bytes, where, error);
   if (!in) throw util::InputError(where, "cannot read image: " + error);
   const codec::Header& spec = in->header();
 

@@ -1,4 +1,5 @@
 // umbra merge: the frame from the tiles of `umbra render --tile I/N`.
+#include <umbra/raster/exr_decode.h>
 #include <umbra/raster/exr_layout.h>
 #include <umbra/raster/image_codec.h>
 #include <umbra/raster/image_io.h>
@@ -54,7 +55,7 @@ TilePart open_tile(const fs::path& path) {
                                         "`umbra render --tile I/N -o NAME.exr`",
                                         content_format(part.bytes)));
   std::string error;
-  part.in = codec::functions().open_exr(part.bytes, where, error);
+  part.in = open_exr(part.bytes, where, error);
   if (!part.in) throw InputError(where, "cannot read image: " + error);
   const codec::Header& spec = part.in->header();
   const int nchannels = static_cast<int>(spec.channels.size());
@@ -184,7 +185,7 @@ MergedFrame merge_frame_tiles(std::span<const fs::path> paths, const fs::path& o
   const auto read_rows = [&](TilePart& part, int y0, int y1, int c0, int c1) {
     staging.resize(static_cast<std::size_t>(y1 - y0) * width * static_cast<std::size_t>(c1 - c0));
     std::string error;
-    if (!part.in) part.in = codec::functions().open_exr(part.bytes, part.path.string(), error);
+    if (!part.in) part.in = open_exr(part.bytes, part.path.string(), error);
     if (!part.in || !part.in->read(y0, y1, c0, c1, staging.data(), error))
       throw InputError(part.path.string(), "cannot read image: " + error);
     // A reader holds OpenEXR's line buffers (~90 MB for a 3840-wide tile

@@ -14,8 +14,9 @@ the project; the libraries' headers by their installed names,
 - the Python module (python/) never reaches cli/, fuzz/ or bench/: like the
   CLI, a thin layer over the libraries;
 - OpenImageIO is included by raster/image_codec_oiio.cpp alone (the module
-  loaded on the first image read), OpenEXR by raster/exr_encode.cpp alone,
-  libpng and zlib by raster/png_encode.cpp alone (the writers), Embree by
+  kept as the tests' independent reader), OpenEXR by raster/exr_encode.cpp,
+  exr_decode.cpp and exr_thread_pool.h alone, libpng and zlib by
+  raster/png_encode.cpp alone, Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
   alone, pybind11 by python/ alone, mimalloc by cli/heap.cpp alone (the
@@ -88,8 +89,8 @@ RULES = [
 ]
 ONLY_IN = [
     ("OpenImageIO/", ("raster/image_codec_oiio.cpp",)),
-    ("OpenEXR/", ("raster/exr_encode.cpp",)),
-    ("Imath/", ("raster/exr_encode.cpp",)),
+    ("OpenEXR/", ("raster/exr_encode.cpp", "raster/exr_decode.cpp", "raster/exr_thread_pool.h")),
+    ("Imath/", ("raster/exr_encode.cpp", "raster/exr_decode.cpp")),
     ("png.h", ("raster/png_encode.cpp",)),
     ("zlib.h", ("raster/png_encode.cpp",)),
     ("embree3/", ("raster/methods/",)),

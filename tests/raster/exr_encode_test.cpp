@@ -1,6 +1,7 @@
 // raster/exr_encode.h against the OpenImageIO module's writer, which wrote
 // every .exr before it: the same bytes, and read back by OpenImageIO (an
 // independent reader) to the same header and values.
+#include <tests/support/exr_test_images.h>
 #include <umbra/raster/exr_encode.h>
 #include <umbra/raster/image_codec.h>
 
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -18,57 +18,17 @@
 namespace umbra::raster {
 namespace {
 
-/// A tile's header as frame_exr_header makes it: rows 3..8 of 10, an
-/// offset display window, umbra's string attributes.
+/// A tile as frame_exr_header makes it: rows 3..8 of 10, so an offset
+/// data window, and umbra's string attributes.
 codec::Header tile_header() {
-  codec::Header header;
-  header.x = 0;
-  header.y = 3;
-  header.width = 7;
-  header.height = 5;
-  header.full_width = 7;
-  header.full_height = 10;
-  header.channels = {"R", "G", "B", "depth", "shadow.0", "count.0"};
-  header.attributes = {{"oiio:ColorSpace", "Linear"},
-                       {"compression", "zip"},
-                       {"DateTime", ""},
-                       {"umbra:tile", "2/3"},
-                       {"umbra:job", "job-7f3a"}};
-  return header;
-}
-
-/// A value per (row, column, channel), with the floats a frame holds that
-/// a careless writer would change: infinity, NaN, negative zero, denormals.
-float value_at(int y, int x, std::size_t c) {
-  const int k = (y * 31 + x) * 7 + static_cast<int>(c);
-  switch (k % 11) {
-    case 0:
-      return std::numeric_limits<float>::infinity();
-    case 1:
-      return -0.0f;
-    case 2:
-      return std::numeric_limits<float>::denorm_min() * static_cast<float>(k);
-    case 3:
-      return std::numeric_limits<float>::quiet_NaN();
-    default:
-      return 0.37f * static_cast<float>(k) - 11.0f;
-  }
-}
-
-codec::FillRows filler(const codec::Header& header) {
-  return [header](int y0, int y1, void* out) {
-    auto* v = static_cast<float*>(out);
-    for (int y = y0; y < y1; ++y)
-      for (int x = 0; x < header.width; ++x)
-        for (std::size_t c = 0; c < header.channels.size(); ++c) *v++ = value_at(y, x, c);
-  };
+  return test::exr_test_tile(7, 3, 5, 10, {"R", "G", "B", "depth", "shadow.0", "count.0"});
 }
 
 std::vector<unsigned char> by_module(const codec::Header& header, int block_rows) {
   std::vector<unsigned char> bytes;
   std::string error;
   EXPECT_TRUE(codec::functions().encode(codec::Format::openexr, header, codec::Pixels::float32,
-                                        block_rows, filler(header), bytes, error))
+                                        block_rows, test::exr_test_fill(header), bytes, error))
       << error;
   return bytes;
 }
@@ -76,7 +36,7 @@ std::vector<unsigned char> by_module(const codec::Header& header, int block_rows
 std::vector<unsigned char> by_openexr(const codec::Header& header, int block_rows) {
   std::vector<unsigned char> bytes;
   std::string error;
-  EXPECT_TRUE(encode_exr(header, block_rows, filler(header), bytes, error)) << error;
+  EXPECT_TRUE(encode_exr(header, block_rows, test::exr_test_fill(header), bytes, error)) << error;
   return bytes;
 }
 
@@ -109,11 +69,11 @@ TEST(ExrEncode, OpenImageIoReadsBackTheHeaderAndEveryValue) {
   EXPECT_EQ(read.height, 5);
   EXPECT_EQ(read.width, 7);
   EXPECT_EQ(read.full_height, 10);
-  EXPECT_EQ(read.attribute("umbra:tile"), "2/3");
-  EXPECT_EQ(read.attribute("umbra:job"), "job-7f3a");
+  EXPECT_EQ(read.attribute("umbra:tile"), "1/2");
+  EXPECT_EQ(read.attribute("umbra:job"), "job-c0ffee");
   EXPECT_EQ(read.attribute("compression"), "zip");
   ASSERT_EQ(read.channels.size(), header.channels.size());
-  // OpenEXR stores channels sorted by name: look each one up.
+  // Channels in the reader's order, not the header's: look each one up.
   std::vector<float> rows(static_cast<std::size_t>(header.height) * header.width *
                           read.channels.size());
   ASSERT_TRUE(in->read(3, 8, 0, static_cast<int>(read.channels.size()), rows.data(), error))
@@ -125,7 +85,7 @@ TEST(ExrEncode, OpenImageIoReadsBackTheHeaderAndEveryValue) {
     for (int y = 3; y < 8; ++y)
       for (int x = 0; x < header.width; ++x) {
         const float got = rows[((y - 3) * header.width + x) * read.channels.size() + file_c];
-        const float want = value_at(y, x, c);
+        const float want = test::exr_test_value(y, x, c);
         std::uint32_t got_bits, want_bits;
         std::memcpy(&got_bits, &got, 4);
         std::memcpy(&want_bits, &want, 4);
@@ -142,22 +102,22 @@ TEST(ExrEncode, RefusesWhatItCannotWriteWithOneLine) {
   std::string error;
   codec::Header header = tile_header();
   header.attributes[1].second = "dwaa";
-  EXPECT_FALSE(encode_exr(header, 0, filler(header), bytes, error));
+  EXPECT_FALSE(encode_exr(header, 0, test::exr_test_fill(header), bytes, error));
   EXPECT_NE(error.find("compression 'dwaa'"), std::string::npos) << error;
   header = tile_header();
   header.attributes[0].second = "sRGB";
   error.clear();
-  EXPECT_FALSE(encode_exr(header, 0, filler(header), bytes, error));
+  EXPECT_FALSE(encode_exr(header, 0, test::exr_test_fill(header), bytes, error));
   EXPECT_NE(error.find("sRGB"), std::string::npos) << error;
   header = tile_header();
   header.channels.clear();
   error.clear();
-  EXPECT_FALSE(encode_exr(header, 0, filler(header), bytes, error));
+  EXPECT_FALSE(encode_exr(header, 0, test::exr_test_fill(header), bytes, error));
   EXPECT_NE(error.find("channel"), std::string::npos) << error;
   header = tile_header();
   header.channels = {"R", "R"};  // OpenEXR keeps one: the fill would not match
   error.clear();
-  EXPECT_FALSE(encode_exr(header, 0, filler(header), bytes, error));
+  EXPECT_FALSE(encode_exr(header, 0, test::exr_test_fill(header), bytes, error));
   EXPECT_NE(error.find("channel 'R' twice"), std::string::npos) << error;
   EXPECT_EQ(error.find('\n'), std::string::npos);
 }
