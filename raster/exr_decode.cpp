@@ -14,7 +14,10 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <memory>
+#include <mutex>
 #include <optional>
+#include <string>
 
 namespace umbra::raster {
 namespace {
@@ -31,7 +34,8 @@ class MemoryStream final : public Imf::IStream {
   MemoryStream(std::string_view bytes, const std::string& where)
       : Imf::IStream(where.c_str()), bytes_(bytes) {}
   bool read(char c[], int n) override {
-    if (n < 0 || position_ > bytes_.size() || bytes_.size() - position_ < std::size_t(n))
+    if (n < 0 || position_ > bytes_.size() ||
+        bytes_.size() - position_ < static_cast<std::size_t>(n))
       throw Iex::InputExc("unexpected end of file");
     std::memcpy(c, bytes_.data() + position_, static_cast<std::size_t>(n));
     position_ += static_cast<std::size_t>(n);
