@@ -268,14 +268,16 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.visibility.resize(here.size());
         sample.tau.resize(here.size());
       }
-      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       const std::uint8_t doubt = scan.uncertain[pixel];
+      // Background the scanline is sure of needs no ray (a tenth of the
+      // lightless frame's instructions went to rays for every pixel).
+      if (!(doubt & kSurfaceUncertain) && scan.visible[pixel] < 0) {
+        store_background(pixel, frame, here);
+        continue;
+      }
+      const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       if (!(doubt & kSurfaceUncertain)) {
         const std::int32_t id = scan.visible[pixel];
-        if (id < 0) {
-          store_background(pixel, frame, here);
-          continue;
-        }
         const SurfaceEntry& entry = table.entries[static_cast<std::size_t>(id)];
         const geometry::HitTriangle tri = geometry::hit_triangle(index, entry.hit);
         sample.t = scan.depth[pixel];
