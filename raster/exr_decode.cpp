@@ -1,5 +1,5 @@
 #include <umbra/raster/exr_decode.h>
-#include <umbra/raster/exr_thread_pool.h>
+#include <umbra/raster/openexr_support.h>
 
 #include <OpenEXR/IexBaseExc.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -48,12 +48,6 @@ class MemoryStream final : public Imf::IStream {
   std::string_view bytes_;
   std::uint64_t position_ = 0;
 };
-
-std::string first_line(const char* text) {
-  std::string line(text);
-  line = line.substr(0, line.find('\n'));
-  return line.empty() ? "unknown OpenEXR error" : line;
-}
 
 codec::Header header_of(const Imf::Header& in) {
   codec::Header out;
@@ -107,7 +101,7 @@ class ExrReader final : public codec::Reader {
       part_->readPixels(y0, y1 - 1);
       return true;
     } catch (const std::exception& e) {
-      error = first_line(e.what());
+      error = detail::exr_message(e.what());
       return false;
     }
   }
@@ -134,7 +128,7 @@ std::unique_ptr<codec::Reader> open_exr(std::string_view bytes, const std::strin
     return std::make_unique<ExrReader>(bytes, where);
   } catch (const std::exception& e) {
     // Iex's exceptions, and std::bad_alloc for a table a header sized.
-    error = first_line(e.what());
+    error = detail::exr_message(e.what());
     return nullptr;
   }
 }

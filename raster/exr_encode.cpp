@@ -1,6 +1,6 @@
 #include <umbra/raster/exr_encode.h>
-#include <umbra/raster/exr_thread_pool.h>
 #include <umbra/raster/library_versions.h>
+#include <umbra/raster/openexr_support.h>
 
 #include <OpenEXR/IexBaseExc.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -89,12 +89,6 @@ bool exr_header(const codec::Header& in, Imf::Header& out, std::string& error) {
   return true;
 }
 
-std::string first_line(const char* text) {
-  std::string line(text);
-  line = line.substr(0, line.find('\n'));
-  return line.empty() ? "unknown OpenEXR error" : line;
-}
-
 }  // namespace
 
 bool encode_exr(const codec::Header& header, int block_rows, const codec::FillRows& fill,
@@ -130,7 +124,7 @@ bool encode_exr(const codec::Header& header, int block_rows, const codec::FillRo
   } catch (const Iex::BaseExc& e) {
     // The library's own failures; what `fill` throws goes to the caller,
     // as it did through the module.
-    error = first_line(e.what());
+    error = detail::exr_message(e.what());
     return false;
   }
   return true;

@@ -269,8 +269,8 @@ Frame render_volume(const geometry::SceneIndex& index,
         sample.tau.resize(here.size());
       }
       const std::uint8_t doubt = scan.uncertain[pixel];
-      // Background the scanline is sure of needs no ray (a tenth of the
-      // lightless frame's instructions went to rays for every pixel).
+      // Background the scanline is sure of needs no ray (rays for every
+      // pixel were 8 % of the lightless frame's instructions).
       if (!(doubt & kSurfaceUncertain) && scan.visible[pixel] < 0) {
         store_background(pixel, frame, here);
         continue;

@@ -15,7 +15,7 @@ the project; the libraries' headers by their installed names,
   CLI, a thin layer over the libraries;
 - OpenImageIO is included by raster/image_codec_oiio.cpp alone (the module
   kept as the tests' independent reader), OpenEXR by raster/exr_encode.cpp,
-  exr_decode.cpp and exr_thread_pool.h alone, libpng and zlib by
+  exr_decode.cpp and openexr_support.h alone, libpng and zlib by
   raster/png_encode.cpp alone, Embree by
   raster/methods/ alone, tinygltf by geometry/io/ alone, simdjson by
   geometry/io/json_document.h alone, PROJ by geometry/export/geodetic_frame.cpp
@@ -89,7 +89,7 @@ RULES = [
 ]
 ONLY_IN = [
     ("OpenImageIO/", ("raster/image_codec_oiio.cpp",)),
-    ("OpenEXR/", ("raster/exr_encode.cpp", "raster/exr_decode.cpp", "raster/exr_thread_pool.h")),
+    ("OpenEXR/", ("raster/exr_encode.cpp", "raster/exr_decode.cpp", "raster/openexr_support.h")),
     ("Imath/", ("raster/exr_encode.cpp", "raster/exr_decode.cpp")),
     ("png.h", ("raster/png_encode.cpp",)),
     ("zlib.h", ("raster/png_encode.cpp",)),
