@@ -10,13 +10,11 @@
 
 namespace umbra::raster::detail {
 
+/// The rows are [ceil(lo − 0.5), ceil(hi − 0.5) − 1] cut to the image:
+/// first_column's ceiling clamped to [0, height], without std::ceil (two
+/// per call, two calls per edge, in every frame's preparation).
 RowRange active_rows(double y0, double y1, int height) {
-  const double lo = std::ceil(std::min(y0, y1) - 0.5);
-  const double hi = std::ceil(std::max(y0, y1) - 0.5) - 1;
-  RowRange r;
-  r.first = lo < 0 ? 0 : (lo > height ? height : static_cast<int>(lo));
-  r.last = hi < -1 ? -1 : (hi > height - 1 ? height - 1 : static_cast<int>(hi));
-  return r;
+  return {first_column(std::min(y0, y1), height), first_column(std::max(y0, y1), height) - 1};
 }
 namespace {
 
@@ -124,7 +122,12 @@ TableEdge table_edge(const ProjectedEdge& e, const CameraSpace& camera, double r
   // rounding).
   const bool tall = std::abs(e.yb - e.ya) >= 1;
   const double slope = tall ? (e.xb - e.xa) / (e.yb - e.ya) : 0.0;
-  const double hyp = std::hypot(e.m.x, e.m.y);
+  // |(m.x, m.y)| as a plain root (std::hypot is a libm call of ~50
+  // instructions guarding against overflow); where the squares overflow or
+  // underflow to nothing, hypot's careful value. Either is within an ulp,
+  // far inside the distance test's slack.
+  double hyp = std::sqrt(e.m.x * e.m.x + e.m.y * e.m.y);
+  if (!(hyp > 1e-150 && hyp < 1e150)) hyp = std::hypot(e.m.x, e.m.y);
   const double rounding_px = 1e-12 * e.m_scale * ray_slant / (camera.pixel_size * hyp);
   const double coordinate_rounding =
       1e-14 * (std::abs(e.xa) + std::abs(e.xb) + frame.width + 1 +

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <new>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace umbra::raster::detail {
 namespace {
@@ -20,7 +23,7 @@ double origin_segment_distance(const Vec3& a, const Vec3& b) {
 
 /// Even-odd test of q against the polygon, both projected along the dominant
 /// axis of n. Used only for the conservative near-eye test.
-bool inside_projected(const std::vector<Vec3>& poly, const Vec3& n, const Vec3& q) {
+bool inside_projected(std::span<const Vec3> poly, const Vec3& n, const Vec3& q) {
   const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
   const int drop = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
   const int u = drop == 0 ? 1 : 0, v = drop == 2 ? 1 : 2;
@@ -44,6 +47,84 @@ struct ClipVertex {
   bool starts_original_edge;  ///< the edge to the next vertex lies on an original edge...
   std::size_t original_edge;  ///< ...this one (vertices original_edge, original_edge + 1)
 };
+
+/// Room for `n` values: on the stack up to kInline (triangles and shadow
+/// quads, nearly every polygon), else in a vector kept per thread (`Slot`
+/// tells a function's vectors apart). Thread-local vectors, each use of
+/// which checks their initialization, and clipping's push_back were ~25 %
+/// of projecting a triangle; they are now reached only by larger polygons.
+/// The stack room is left uninitialized (a byte array's storage holds the
+/// doubles and Vec3s written into it): zeroing it was a `rep stos` a call.
+constexpr std::size_t kInline = 8;
+template <class T, int Slot>
+class Scratch {
+ public:
+  static constexpr std::size_t kRoom = 2 * edge_room(kInline);
+  std::span<T> take(std::size_t n) {
+    if (n <= kRoom) return {std::launder(reinterpret_cast<T*>(storage_)), n};
+    thread_local std::vector<T> spill;
+    spill.resize(n);
+    return spill;
+  }
+
+ private:
+  alignas(T) std::byte storage_[sizeof(T) * kRoom];
+};
+
+/// project_polygon's last steps over the m vertices of the clipped polygon,
+/// `vertex` with their lengths. Edge k runs from vertex k to the next; its
+/// line is taken from line_points[line(k).first] and [line(k).second], whose
+/// lengths are in line_lengths. The pixel coordinates, their error bounds
+/// and the bounding box; for an active polygon, its edges in `room`.
+template <class Line>
+void project_edges(ProjectedPolygon& out, std::uint32_t index, const CameraSpace& camera,
+                   std::span<const Vec3> vertex, std::span<const double> vertex_length,
+                   std::span<const Vec3> line_points, std::span<const double> line_lengths,
+                   Line line, std::span<ProjectedEdge> room) {
+  const geometry::CameraFrame& frame = camera.frame;
+  const std::size_t m = vertex.size();
+  // Projection. A projected coordinate x/z is within a few ulps of
+  // mag/|P| relative error; we bound its pixel error by
+  // 1e-13·(mag/|P|)·(|px| + |py| + width + height).
+  Scratch<double, 0> px_room;
+  Scratch<double, 1> py_room;
+  Scratch<double, 2> perr_room;
+  const std::span<double> px = px_room.take(m);
+  const std::span<double> py = py_room.take(m);
+  const std::span<double> perr = perr_room.take(m);
+  out.bbox_x0 = out.bbox_y0 = std::numeric_limits<double>::infinity();
+  out.bbox_x1 = out.bbox_y1 = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vec3& c = vertex[k];
+    px[k] = camera.pixel_x(c.x / c.z);
+    py[k] = camera.pixel_y(c.y / c.z);
+    perr[k] = 1e-13 * (out.mag / vertex_length[k]) *
+              (std::abs(px[k]) + std::abs(py[k]) + frame.width + frame.height);
+    out.bbox_x0 = std::min(out.bbox_x0, px[k] - perr[k]);
+    out.bbox_x1 = std::max(out.bbox_x1, px[k] + perr[k]);
+    out.bbox_y0 = std::min(out.bbox_y0, py[k] - perr[k]);
+    out.bbox_y1 = std::max(out.bbox_y1, py[k] + perr[k]);
+  }
+  if (out.status != ProjectedPolygon::Status::active) return;
+
+  if (room.size() < m) throw std::logic_error("project_polygon: no room for the clipped edges");
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t k1 = next(k, m);
+    const auto [a, b] = line(k);
+    ProjectedEdge e;
+    e.m = cross(line_points[a], line_points[b]);
+    e.m_scale = out.mag * (line_lengths[a] + line_lengths[b]);
+    e.xa = px[k];
+    e.ya = py[k];
+    e.xb = px[k1];
+    e.yb = py[k1];
+    e.err_a = perr[k];
+    e.err_b = perr[k1];
+    e.polygon = index;
+    room[k] = e;
+  }
+  out.edges = room.first(m);
+}
 
 }  // namespace
 
@@ -96,24 +177,32 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
                                   " has a non-finite vertex");
   if (count == 0) return out;
 
-  // Camera space, and the magnitudes the error bounds are stated in.
-  // Scratch buffers reused by every call on a thread: prepare projects 100k+
-  // polygons with many lights, and allocating these each time was a visible
-  // part of it.
-  thread_local std::vector<Vec3> p;
-  p.resize(count);
+  // Camera space, and the magnitudes the error bounds are stated in; each
+  // vertex's distance from the eye once, for the edges and the projection.
+  Scratch<Vec3, 0> p_room;
+  Scratch<double, 3> p_length_room;
+  const std::span<Vec3> p = p_room.take(count);
+  const std::span<double> p_length = p_length_room.take(count);
   // Largest squares first, one square root each after: the same doubles as
   // the largest roots (a correctly rounded root is monotone).
   double max_world2 = 0, max_camera2 = 0, reach2 = 0;
+  const double z_near = camera.z_near;
+  double min_z = std::numeric_limits<double>::infinity();
+  bool all_in = true;  // not !(min_z < z_near): a NaN z (an overflow) is out, as clipping has it
   for (std::size_t i = 0; i < count; ++i) {
     p[i] = camera.to_camera(w[i]);
     max_world2 = std::max(max_world2, dot(w[i], w[i]));
-    max_camera2 = std::max(max_camera2, dot(p[i], p[i]));
+    const double camera2 = dot(p[i], p[i]);
+    p_length[i] = std::sqrt(camera2);  // length(p[i]), bit for bit
+    max_camera2 = std::max(max_camera2, camera2);
+    min_z = std::min(min_z, p[i].z);
+    all_in = all_in && p[i].z >= z_near;
     const Vec3 to_eye = frame.eye - w[i];
     reach2 = std::max(reach2, dot(to_eye, to_eye));
   }
   const double reach = std::sqrt(reach2);
-  out.mag = std::sqrt(max_world2) + length(frame.eye) + std::sqrt(max_camera2);
+  const double max_camera = std::sqrt(max_camera2);
+  out.mag = std::sqrt(max_world2) + length(frame.eye) + max_camera;
   out.p0 = p[0];
   Vec3 n{}, n_world{};
   for (std::size_t i = 1; i + 1 < count; ++i) {
@@ -129,7 +218,7 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   out.n = n;
   out.n_length = length(n);
   out.n_dot_p0 = dot(n, p[0]);
-  out.p0_length = length(p[0]);
+  out.p0_length = p_length[0];
 
   // Eye side, from the right-handed (Newell / fan) normal in world space:
   // +nb_c when dot(n, eye − v0) > 0, i.e. the eye sees the vertices run
@@ -158,20 +247,43 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   // Near the eye: does any point of the polygon lie within near_radius of the
   // eye (the origin of camera space)? If not, no sample ray can meet it at
   // z < z_near (such a point is within near_radius / 2 of the eye), so
-  // clipping at z_near loses nothing any pixel sees.
+  // clipping at z_near loses nothing any pixel sees. Every point of an edge
+  // has z ≥ min_z, and its computed distance errs by a few ulps of the
+  // endpoints' lengths (far below 1e-12·max|P_i|): when min_z exceeds the
+  // radius by that, no edge's computed distance can reach the radius, and
+  // the edges need not be measured (nearly every polygon, the eye being
+  // 1e-9 of the scene from the near plane).
   const double radius = camera.near_radius;
-  for (std::size_t i = 0; i < count && !out.near_eye; ++i)
-    out.near_eye = origin_segment_distance(p[i], p[next(i, count)]) <= radius;
+  if (!(min_z - 1e-12 * max_camera > radius))
+    for (std::size_t i = 0; i < count && !out.near_eye; ++i)
+      out.near_eye = origin_segment_distance(p[i], p[next(i, count)]) <= radius;
   if (!out.near_eye && out.n_length > 0 && std::abs(out.n_dot_p0) <= radius * out.n_length) {
     const Vec3 foot = (out.n_dot_p0 / dot(n, n)) * n;  // the eye's projection on the plane
     out.near_eye = inside_projected(p, n, foot);
+  }
+
+  if (all_in) {
+    // Wholly in front of the near plane (nearly every polygon): the clipped
+    // polygon is the polygon, each edge an original one.
+    if (count < 3) {
+      out.status = ProjectedPolygon::Status::hidden;
+      return out;
+    }
+    out.status = (zero_area || edge_on) ? ProjectedPolygon::Status::degenerate
+                                        : ProjectedPolygon::Status::active;
+    project_edges(
+        out, index, camera, p, p_length, p, p_length,
+        [&](std::size_t k) {
+          return std::pair{k, next(k, count)};
+        },
+        room);
+    return out;
   }
 
   // Sutherland–Hodgman against z ≥ z_near. Each output vertex remembers the
   // edge that leaves it: part of an original edge, or a piece of the near plane.
   thread_local std::vector<ClipVertex> clipped;
   clipped.clear();
-  const double z_near = camera.z_near;
   for (std::size_t i = 0; i < count; ++i) {
     const Vec3& a = p[i];
     const Vec3& b = p[next(i, count)];
@@ -192,54 +304,40 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   }
   out.status = (zero_area || edge_on) ? ProjectedPolygon::Status::degenerate
                                       : ProjectedPolygon::Status::active;
-
-  // Projection. A projected coordinate x/z is within a few ulps of
-  // mag/|P| relative error; we bound its pixel error by
-  // 1e-13·(mag/|P|)·(|px| + |py| + width + height).
+  // The clipped vertices, and each edge's line: an original edge's from its
+  // original endpoints (see ProjectedEdge::m), a piece of the near plane's
+  // from the clipped ones; line k from line_points[2k] to [2k + 1].
   const std::size_t m = clipped.size();
-  thread_local std::vector<double> px, py, perr;
-  px.resize(m);
-  py.resize(m);
-  perr.resize(m);
-  out.bbox_x0 = out.bbox_y0 = std::numeric_limits<double>::infinity();
-  out.bbox_x1 = out.bbox_y1 = -std::numeric_limits<double>::infinity();
+  Scratch<Vec3, 1> vertex_room;
+  Scratch<double, 4> vertex_length_room;
+  Scratch<Vec3, 2> line_room;
+  Scratch<double, 5> line_length_room;
+  const std::span<Vec3> vertex = vertex_room.take(m);
+  const std::span<double> vertex_length = vertex_length_room.take(m);
+  const std::span<Vec3> line_points = line_room.take(2 * m);
+  const std::span<double> line_lengths = line_length_room.take(2 * m);
   for (std::size_t k = 0; k < m; ++k) {
-    const Vec3& c = clipped[k].p;
-    px[k] = camera.pixel_x(c.x / c.z);
-    py[k] = camera.pixel_y(c.y / c.z);
-    perr[k] = 1e-13 * (out.mag / length(c)) *
-              (std::abs(px[k]) + std::abs(py[k]) + frame.width + frame.height);
-    out.bbox_x0 = std::min(out.bbox_x0, px[k] - perr[k]);
-    out.bbox_x1 = std::max(out.bbox_x1, px[k] + perr[k]);
-    out.bbox_y0 = std::min(out.bbox_y0, py[k] - perr[k]);
-    out.bbox_y1 = std::max(out.bbox_y1, py[k] + perr[k]);
-  }
-  if (out.status != ProjectedPolygon::Status::active) return out;
-
-  if (room.size() < m) throw std::logic_error("project_polygon: no room for the clipped edges");
-  for (std::size_t k = 0; k < m; ++k) {
-    const std::size_t k1 = next(k, m);
-    ProjectedEdge e;
-    Vec3 pa, pb;
+    vertex[k] = clipped[k].p;
+    vertex_length[k] = length(clipped[k].p);
     if (clipped[k].starts_original_edge) {
-      pa = p[clipped[k].original_edge];
-      pb = p[next(clipped[k].original_edge, count)];
+      const std::size_t a = clipped[k].original_edge, b = next(a, count);
+      line_points[2 * k] = p[a];
+      line_points[2 * k + 1] = p[b];
+      line_lengths[2 * k] = p_length[a];
+      line_lengths[2 * k + 1] = p_length[b];
     } else {
-      pa = clipped[k].p;
-      pb = clipped[k1].p;
+      line_points[2 * k] = clipped[k].p;
+      line_points[2 * k + 1] = clipped[next(k, m)].p;
+      line_lengths[2 * k] = length(line_points[2 * k]);
+      line_lengths[2 * k + 1] = length(line_points[2 * k + 1]);
     }
-    e.m = cross(pa, pb);
-    e.m_scale = out.mag * (length(pa) + length(pb));
-    e.xa = px[k];
-    e.ya = py[k];
-    e.xb = px[k1];
-    e.yb = py[k1];
-    e.err_a = perr[k];
-    e.err_b = perr[k1];
-    e.polygon = index;
-    room[k] = e;
   }
-  out.edges = room.first(m);
+  project_edges(
+      out, index, camera, vertex, vertex_length, line_points, line_lengths,
+      [](std::size_t k) {
+        return std::pair{2 * k, 2 * k + 1};
+      },
+      room);
   return out;
 }
 
