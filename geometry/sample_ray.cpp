@@ -28,4 +28,15 @@ SampleRay sample_ray(const CameraFrame& frame, int i, int j) {
   return {frame.eye, d};
 }
 
+void sample_row_directions(const CameraFrame& frame, int j, std::span<Vec3> out) {
+  const double sy = (1.0 - 2.0 * (j + 0.5) / frame.height) * frame.h;
+  // sy·u is a product of its own in sample_ray's sums: the same doubles.
+  const Vec3 sy_u{sy * frame.u.x, sy * frame.u.y, sy * frame.u.z};
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const double sx = (2.0 * (static_cast<int>(i) + 0.5) / frame.width - 1.0) * frame.a * frame.h;
+    out[i] = {frame.f.x + sx * frame.r.x + sy_u.x, frame.f.y + sx * frame.r.y + sy_u.y,
+              frame.f.z + sx * frame.r.z + sy_u.z};
+  }
+}
+
 }  // namespace umbra::geometry

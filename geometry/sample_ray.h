@@ -3,6 +3,8 @@
 // method and by the validator, so that all of them look at the same points.
 #include <umbra/geometry/scene.h>
 
+#include <span>
+
 namespace umbra::geometry {
 
 /// The ray eye + t·direction through the centre of pixel (i, j), i from the
@@ -23,5 +25,11 @@ struct CameraFrame {
 
 CameraFrame camera_frame(const Camera& camera);
 SampleRay sample_ray(const CameraFrame& frame, int i, int j);
+
+/// The directions of row j's sample rays: out[i] is sample_ray(frame, i,
+/// j).direction bit for bit, for i < out.size() (at most the width). The
+/// row's own terms are computed once, where a renderer asking pixel by
+/// pixel computes them every time (the scanline makes every pixel's ray).
+void sample_row_directions(const CameraFrame& frame, int j, std::span<Vec3> out);
 
 }  // namespace umbra::geometry

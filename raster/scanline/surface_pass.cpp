@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace umbra::raster::detail {
 
@@ -14,9 +15,10 @@ namespace umbra::raster::detail {
 void BandWorker::scan_row(int j, std::size_t carried) {
   const CameraSpace& camera = scene_.camera;
   const int width = camera.frame.width;
+  const std::span<Vec3> rays(ray_.data() + row_base_, static_cast<std::size_t>(width));
+  geometry::sample_row_directions(camera.frame, j, rays);
   for (int i = 0; i < width; ++i) {
-    ray_[row_base_ + i] =
-        camera.to_camera_direction(geometry::sample_ray(camera.frame, i, j).direction);
+    ray_[row_base_ + i] = camera.to_camera_direction(ray_[row_base_ + i]);
     ray_length_[row_base_ + i] = length(ray_[row_base_ + i]);
     const std::size_t p = pixel(i, j);
     result_.visible[p] = -1;

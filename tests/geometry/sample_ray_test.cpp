@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace umbra::geometry {
 namespace {
 
@@ -41,6 +43,42 @@ TEST(SampleRay, FollowsDesignFormulaBitForBit) {
   const Vec3 tl = sample_ray(frame, 0, 0).direction;
   EXPECT_LT(dot(tl, r), 0);
   EXPECT_GT(dot(tl, u), 0);
+}
+
+TEST(SampleRowDirections, AreSampleRaysDirectionsBitForBit) {
+  // Odd frames: tilted cameras, a wide and a one-pixel image, rows at the
+  // edges and in between, and a row asked only in part.
+  const Camera cameras[] = {{.eye = {0.1, 3.7, 9.3},
+                             .look_at = {-0.3, 0.2, 0.05},
+                             .up = {0.2, 1, 0.1},
+                             .fov_y_deg = 37.5,
+                             .width = 641,
+                             .height = 479},
+                            {.eye = {1e6, -2e5, 3},
+                             .look_at = {0, 0, 0},
+                             .up = {0, 0, 1},
+                             .fov_y_deg = 120,
+                             .width = 1,
+                             .height = 1},
+                            {.eye = {0, 0, 5},
+                             .look_at = {0, 0, 0},
+                             .up = {0, 1, 0},
+                             .fov_y_deg = 1e-3,
+                             .width = 4096,
+                             .height = 3}};
+  for (const Camera& camera : cameras) {
+    const CameraFrame frame = camera_frame(camera);
+    std::vector<Vec3> row(static_cast<std::size_t>(frame.width));
+    for (const int j : {0, frame.height / 2, frame.height - 1}) {
+      sample_row_directions(frame, j, row);
+      for (int i = 0; i < frame.width; ++i)
+        ASSERT_EQ(row[i], sample_ray(frame, i, j).direction) << i << ' ' << j;
+    }
+    std::vector<Vec3> part(static_cast<std::size_t>((frame.width + 1) / 2), Vec3{7, 7, 7});
+    sample_row_directions(frame, 0, part);
+    for (std::size_t i = 0; i < part.size(); ++i)
+      EXPECT_EQ(part[i], sample_ray(frame, static_cast<int>(i), 0).direction);
+  }
 }
 
 }  // namespace
