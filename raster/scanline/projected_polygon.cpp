@@ -48,18 +48,19 @@ struct ClipVertex {
   std::size_t original_edge;  ///< ...this one (vertices original_edge, original_edge + 1)
 };
 
-/// Room for `n` values: on the stack up to kInline (triangles and shadow
-/// quads, nearly every polygon), else in a vector kept per thread (`Slot`
-/// tells a function's vectors apart). Thread-local vectors, each use of
-/// which checks their initialization, and clipping's push_back were ~25 %
-/// of projecting a triangle; they are now reached only by larger polygons.
-/// The stack room is left uninitialized (a byte array's storage holds the
-/// doubles and Vec3s written into it): zeroing it was a `rep stos` a call.
-constexpr std::size_t kInline = 8;
+/// Room for `n` values: on the stack up to kRoom, else in a vector kept per
+/// thread (`Slot` tells a function's vectors apart). kRoom is a clipped
+/// octagon's line ends (2 · 12): triangles and shadow quads, nearly every
+/// polygon, stay far below it and reach no thread-local vector (each use
+/// checks its initialisation); only clipped ones reach clipping's
+/// push_back. The stack room is left uninitialised (a byte array's storage
+/// holds the doubles and Vec3s written into it): zeroing it was a `rep
+/// stos` a call.
+constexpr std::size_t kStackVertices = 8;
 template <class T, int Slot>
 class Scratch {
  public:
-  static constexpr std::size_t kRoom = 2 * edge_room(kInline);
+  static constexpr std::size_t kRoom = 2 * edge_room(kStackVertices);
   std::span<T> take(std::size_t n) {
     if (n <= kRoom) return {std::launder(reinterpret_cast<T*>(storage_)), n};
     thread_local std::vector<T> spill;
