@@ -270,11 +270,12 @@ Frame render_volume(const geometry::SceneIndex& index,
       }
       const std::uint8_t doubt = scan.uncertain[pixel];
       // Background the scanline is sure of needs no ray (rays for every
-      // pixel were 8 % of the lightless frame's instructions).
-      if (!(doubt & kSurfaceUncertain) && scan.visible[pixel] < 0) {
-        store_background(pixel, frame, here);
-        continue;
-      }
+      // pixel were 8 % of the lightless frame's instructions), nor any
+      // store: the frame was made as background (Frame's constructor and
+      // describe_lights), and this loop visits each pixel once. Restating
+      // it was a store per pixel and light: 95 M instructions of a
+      // 16-light refined_elephant frame, 7.6 % of the process's samples.
+      if (!(doubt & kSurfaceUncertain) && scan.visible[pixel] < 0) continue;
       const geometry::SampleRay ray = geometry::sample_ray(camera, i, j);
       if (!(doubt & kSurfaceUncertain)) {
         const std::int32_t id = scan.visible[pixel];
