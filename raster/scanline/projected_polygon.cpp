@@ -320,18 +320,18 @@ ProjectedPolygon project_polygon(const RasterPolygon& polygon, std::uint32_t ind
   for (std::size_t k = 0; k < m; ++k) {
     vertex[k] = clipped[k].p;
     vertex_length[k] = length(clipped[k].p);
-    if (clipped[k].starts_original_edge) {
-      const std::size_t a = clipped[k].original_edge, b = next(a, count);
-      line_points[2 * k] = p[a];
-      line_points[2 * k + 1] = p[b];
-      line_lengths[2 * k] = p_length[a];
-      line_lengths[2 * k + 1] = p_length[b];
-    } else {
-      line_points[2 * k] = clipped[k].p;
-      line_points[2 * k + 1] = clipped[next(k, m)].p;
-      line_lengths[2 * k] = length(line_points[2 * k]);
-      line_lengths[2 * k + 1] = length(line_points[2 * k + 1]);
-    }
+  }
+  for (std::size_t k = 0; k < m; ++k) {
+    const bool original = clipped[k].starts_original_edge;
+    const std::size_t a = original ? clipped[k].original_edge : k;
+    const std::size_t b = original ? next(a, count) : next(k, m);
+    const std::span<const Vec3> points = original ? std::span<const Vec3>(p) : vertex;
+    const std::span<const double> lengths =
+        original ? std::span<const double>(p_length) : vertex_length;
+    line_points[2 * k] = points[a];
+    line_points[2 * k + 1] = points[b];
+    line_lengths[2 * k] = lengths[a];
+    line_lengths[2 * k + 1] = lengths[b];
   }
   project_edges(
       out, index, camera, vertex, vertex_length, line_points, line_lengths,

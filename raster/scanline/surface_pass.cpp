@@ -18,8 +18,8 @@ void BandWorker::scan_row(int j, std::size_t carried) {
   const std::span<Vec3> rays(ray_.data() + row_base_, static_cast<std::size_t>(width));
   geometry::sample_row_directions(camera.frame, j, rays);
   for (int i = 0; i < width; ++i) {
-    ray_[row_base_ + i] = camera.to_camera_direction(ray_[row_base_ + i]);
-    ray_length_[row_base_ + i] = length(ray_[row_base_ + i]);
+    rays[i] = camera.to_camera_direction(rays[i]);
+    ray_length_[row_base_ + i] = length(rays[i]);
     const std::size_t p = pixel(i, j);
     result_.visible[p] = -1;
     result_.depth[p] = kInfinity;
