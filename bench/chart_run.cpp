@@ -3,6 +3,7 @@
 #include <umbra/raster/image_io.h>
 #include <umbra/raster/methods/ikedo_functions.h>
 #include <umbra/raster/methods/map_variants.h>
+#include <umbra/util/huge_pages.h>
 
 #include <fmt/format.h>
 
@@ -144,6 +145,9 @@ Row run_setting(const geometry::Scene& scene, const raster::OracleTruth& truth,
   Row row;
   row.setting = setting;
   raster::Frame frame;
+  // The runs reuse each other's buffers (util/huge_pages.h), as a sequence
+  // of frames does.
+  const util::ReuseHugePages reuse;
   for (int r = 0; r < runs; ++r) {
     const auto start = std::chrono::steady_clock::now();
     frame = raster::render(scene, setting.options);

@@ -25,6 +25,7 @@
 #include <umbra/raster/render.h>
 #include <umbra/raster/validate.h>
 #include <umbra/util/atomic_files.h>
+#include <umbra/util/huge_pages.h>
 
 #include "bench_scene.h"
 #include "city_scene.h"
@@ -239,7 +240,13 @@ int main(int argc, char** argv) {
   umbra::bench::dump_scenes();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
+  {
+    // Frames rendered again and again, as a sequence of frames would be:
+    // each repetition reuses the buffers of the one before rather than
+    // paying the kernel for zeroed pages (util/huge_pages.h).
+    const umbra::util::ReuseHugePages reuse;
+    benchmark::RunSpecifiedBenchmarks();
+  }
   benchmark::Shutdown();
   if (std::getenv("UMBRA_BENCH_VALIDATE") != nullptr) umbra::bench::validate_scenes();
   return 0;

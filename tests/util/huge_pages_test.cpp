@@ -1,6 +1,8 @@
 // The per-pixel buffers' allocator (util/huge_pages.h): large blocks are
 // mapped apart on 2 MiB boundaries, small ones come from std::allocator, and
-// both hold what is written to them through every container operation.
+// both hold what is written to them through every container operation;
+// while a ReuseHugePages lives, released blocks are kept for the next
+// request of their size, up to a cap; without one they go back at once.
 #include <umbra/util/huge_pages.h>
 #include <umbra/util/uninitialized.h>
 
@@ -74,6 +76,77 @@ TEST(HugePages, ReserveHugeGivesSmallListsAWholeAlignedPageThatNeverMoves) {
   for (std::uint64_t k = 0; k < (1 << 19); ++k) list.push_back(k);
   EXPECT_EQ(list.data(), first);
   EXPECT_EQ(list[(1 << 19) - 1], (1u << 19) - 1);
+}
+
+TEST(HugePages, AReleasedBlockServesTheNextRequestOfItsSizeAsItWasLeft) {
+  const util::ReuseHugePages reuse;
+  util::release_cached_huge_pages();
+  ASSERT_EQ(util::cached_huge_page_bytes(), 0u);
+  const std::size_t bytes = std::size_t{3} << 20;  // rounded to 4 MiB
+  auto* first = static_cast<std::uint32_t*>(util::map_huge_pages(bytes));
+  first[0] = 0xfeedu;
+  first[bytes / 4 - 1] = 0xbeefu;
+  util::unmap_huge_pages(first, bytes);
+  EXPECT_EQ(util::cached_huge_page_bytes(), std::size_t{4} << 20);
+  // Another size that rounds differently does not take it...
+  void* other = util::map_huge_pages(std::size_t{5} << 20);
+  EXPECT_NE(other, static_cast<void*>(first));
+  EXPECT_EQ(util::cached_huge_page_bytes(), std::size_t{4} << 20);
+  // ...one that rounds the same does, bytes unchanged (not zeroed).
+  auto* second = static_cast<std::uint32_t*>(util::map_huge_pages((std::size_t{4} << 20) - 8));
+  EXPECT_EQ(second, first);
+  EXPECT_EQ(second[0], 0xfeedu);
+  EXPECT_EQ(second[bytes / 4 - 1], 0xbeefu);
+  EXPECT_EQ(util::cached_huge_page_bytes(), 0u);
+  util::unmap_huge_pages(second, (std::size_t{4} << 20) - 8);
+  util::unmap_huge_pages(other, std::size_t{5} << 20);
+  EXPECT_EQ(util::release_cached_huge_pages(), std::size_t{10} << 20);
+  EXPECT_EQ(util::cached_huge_page_bytes(), 0u);
+}
+
+TEST(HugePages, TheKeptBlocksStayUnderTheCapOldestReleasedFirst) {
+  const util::ReuseHugePages reuse;
+  util::release_cached_huge_pages();
+  // Address space only: none of these is touched, so none is backed.
+  // Whole huge pages, three of them just over the cap.
+  constexpr std::size_t page = std::size_t{2} << 20;
+  const std::size_t third = (util::kHugePageCacheBytes / 3 / page + 1) * page;
+  void* a = util::map_huge_pages(third);
+  void* b = util::map_huge_pages(third);
+  void* c = util::map_huge_pages(third);
+  util::unmap_huge_pages(a, third);
+  util::unmap_huge_pages(b, third);
+  util::unmap_huge_pages(c, third);  // three would exceed the cap: a goes
+  EXPECT_EQ(util::cached_huge_page_bytes(), 2 * third);
+  EXPECT_EQ(util::map_huge_pages(third), c);  // the most recent first
+  EXPECT_EQ(util::map_huge_pages(third), b);
+  void* fresh = util::map_huge_pages(third);
+  EXPECT_EQ(util::cached_huge_page_bytes(), 0u);
+  for (void* block : {b, c, fresh}) util::unmap_huge_pages(block, third);
+  // A block above the cap by itself is never kept.
+  const std::size_t huge = util::kHugePageCacheBytes + page;
+  const std::size_t before = util::cached_huge_page_bytes();
+  util::unmap_huge_pages(util::map_huge_pages(huge), huge);
+  EXPECT_EQ(util::cached_huge_page_bytes(), before);
+  util::release_cached_huge_pages();
+}
+
+TEST(HugePages, BlocksAreKeptOnlyWhileAReuseScopeLives) {
+  const std::size_t bytes = std::size_t{4} << 20;
+  util::unmap_huge_pages(util::map_huge_pages(bytes), bytes);
+  EXPECT_EQ(util::cached_huge_page_bytes(), 0u);  // no scope: released
+  {
+    const util::ReuseHugePages outer;
+    {
+      const util::ReuseHugePages inner;
+      util::unmap_huge_pages(util::map_huge_pages(bytes), bytes);
+      EXPECT_EQ(util::cached_huge_page_bytes(), bytes);
+    }
+    EXPECT_EQ(util::cached_huge_page_bytes(), bytes);  // the outer one lives
+    util::unmap_huge_pages(util::map_huge_pages(bytes * 2), bytes * 2);
+    EXPECT_EQ(util::cached_huge_page_bytes(), bytes * 3);
+  }
+  EXPECT_EQ(util::cached_huge_page_bytes(), 0u);  // the last scope released them
 }
 
 }  // namespace
