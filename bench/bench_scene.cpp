@@ -52,4 +52,13 @@ geometry::Scene mesh_on_floor(const std::filesystem::path& mesh, int lights, int
   return scene;
 }
 
+geometry::Scene mesh_on_large_floor(const std::filesystem::path& mesh, int width, int height) {
+  geometry::Scene scene = mesh_on_floor(mesh, 4, width, height);
+  scene.models[0].vertices = {{-30, 0, -30}, {-30, 0, 30}, {30, 0, 30}, {30, 0, -30}};
+  geometry::Light& sun = scene.lights[3];
+  sun.type = geometry::LightType::directional;
+  sun.direction = {-1, -0.22, -0.35};
+  return scene;
+}
+
 }  // namespace umbra::bench

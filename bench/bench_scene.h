@@ -12,4 +12,10 @@ namespace umbra::bench {
 /// width x height camera from the front and above.
 geometry::Scene mesh_on_floor(const std::filesystem::path& mesh, int lights, int width, int height);
 
+/// Goal 1's last case (issue 20): mesh_on_floor with 4 lights, the floor
+/// 60 x 60 units (to the horizon in the picture) and the fourth light a
+/// low directional one, (-1, -0.22, -0.35), whose shadow volume's sides
+/// run long across the floor.
+geometry::Scene mesh_on_large_floor(const std::filesystem::path& mesh, int width, int height);
+
 }  // namespace umbra::bench

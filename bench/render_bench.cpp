@@ -212,13 +212,19 @@ void register_benchmarks() {
   }
   for (const std::string& mesh : split(std::getenv("UMBRA_BENCH_MESHES"))) {
     const std::string stem = std::filesystem::path(mesh).stem().string();
-    for (const int lights : {1, 4, 16}) {
-      // Load once per (mesh, lights); every pass renders the same scene.
-      const geometry::Scene scene = mesh_on_floor(mesh, lights, 1280, 720);
-      scenes().emplace_back(stem + "/lights:" + std::to_string(lights), scene);
+    // The bench floor under 1, 4 and 16 point lights, and the large floor
+    // with a low directional light (goal 1's last case) as "<mesh>-floor60".
+    std::vector<std::pair<std::string, geometry::Scene>> setups;
+    for (const int lights : {1, 4, 16})
+      setups.emplace_back(stem + "/lights:" + std::to_string(lights),
+                          mesh_on_floor(mesh, lights, 1280, 720));
+    setups.emplace_back(stem + "-floor60/lights:4", mesh_on_large_floor(mesh, 1280, 720));
+    for (const auto& [name, scene] : setups) {
+      // Every pass renders the same scene.
+      scenes().emplace_back(name, scene);
       for (const std::string& pass : kPasses) {
         benchmark::RegisterBenchmark(
-            ("Render/" + stem + "/lights:" + std::to_string(lights) + "/" + pass).c_str(),
+            ("Render/" + name + "/" + pass).c_str(),
             [scene = pass_scene(scene, pass), pass, warmed = false](benchmark::State& s) mutable {
               run_pass(s, scene, pass, !warmed);
               warmed = true;

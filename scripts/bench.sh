@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The renderer benchmark on CGAL's data meshes (issue 4): frame time with and
-# without shadows at 1280x720 with 1, 4 and 16 lights, as a table; beside it
+# without shadows at 1280x720 with 1, 4 and 16 lights, and on a 60 x 60 floor
+# with a low directional light ("<mesh>-floor60"), as a table; beside it
 # Embree's shadow and primary rays and a float z-buffer (issue 20), and the
 # scene parser's MB/s on the same scenes as inline JSON; and the night city
 # under 1, 64 and 1,024 street lamps (lights that cost what they reach).
