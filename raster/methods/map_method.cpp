@@ -146,7 +146,7 @@ Frame render_map(const geometry::SceneIndex& index, const RenderOptions& options
 
   // 1. The visible surface, as Method::volume finds it.
   auto start = util::Clock::now();
-  const SurfaceTable table = surface_table(index);
+  const SurfaceTable table = surface_table(index, options.threads);
   const SphereTable spheres(table.polygons, scene.lights);
   progress.phase("scanline", static_cast<std::uint64_t>(rows.size()));
   const ScanlineResult scan =

@@ -148,7 +148,7 @@ Frame render_volume(const geometry::SceneIndex& index,
   stats.seconds_volumes = util::seconds_since(start);
 
   start = util::Clock::now();
-  SurfaceTable table = surface_table(index);
+  SurfaceTable table = surface_table(index, options.threads);
   const SphereTable spheres(table.polygons, scene.lights);
   const LightWindows windows = options.light_windows
                                    ? light_windows(camera, scene.lights)

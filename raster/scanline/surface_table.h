@@ -26,7 +26,9 @@ struct SurfaceTable {
   std::vector<RasterPolygon> polygons;  ///< kind surface, id = index in entries
 };
 
-SurfaceTable surface_table(const geometry::SceneIndex& index);
+/// The table of `index`'s scene, made on up to `threads` threads (0: all);
+/// the same for any number.
+SurfaceTable surface_table(const geometry::SceneIndex& index, unsigned threads);
 
 /// The entry of one polygon's fan triangle: its normal and its model's look.
 SurfaceEntry surface_entry(const geometry::SceneIndex& index, const geometry::SurfaceHit& hit);

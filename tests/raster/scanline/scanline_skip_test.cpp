@@ -36,7 +36,7 @@ ScanlineInput scanline_input(const geometry::Scene& scene,
   ScanlineInput in;
   in.frame = geometry::camera_frame(scene.camera);
   in.lights = scene.lights.size();
-  in.polygons = surface_table(index).polygons;
+  in.polygons = surface_table(index, 1).polygons;
   for (std::uint32_t k = 0; k < volumes.polygons.size(); ++k) {
     const geometry::ShadowPolygon& s = volumes.polygons[k];
     in.polygons.push_back({.vertices = s.vertices,
