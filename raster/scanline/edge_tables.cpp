@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -267,13 +268,14 @@ EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPol
   room.assign(input.size() + 1, 0);
   for (std::size_t k = 0; k < input.size(); ++k)
     room[k + 1] = room[k] + edge_room(input[k].vertices.size());
-  scene.edge_store.resize(room.back());
-  scene.polygons.resize(input.size());
+  scene.edge_store = util::UnconstructedArray<ProjectedEdge>(room.back());
+  scene.polygons = util::UnconstructedArray<ProjectedPolygon>(input.size());
+  const std::span<ProjectedEdge> store(scene.edge_store.data(), scene.edge_store.size());
   util::parallel_for_blocks(input.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
-      scene.polygons[k] =
-          project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
-                          std::span(scene.edge_store).subspan(room[k], room[k + 1] - room[k]));
+      std::construct_at(&scene.polygons[k],
+                        project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
+                                        store.subspan(room[k], room[k + 1] - room[k])));
   });
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.

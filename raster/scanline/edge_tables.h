@@ -134,11 +134,13 @@ struct EdgeTables {
   CameraSpace camera;
   /// Every polygon's clipped edges, edge_room(vertices) places each, in
   /// huge pages: one block instead of an allocation per polygon (100k+ with
-  /// many lights, their heap pages faulted in afresh every frame).
-  util::UninitializedVector<ProjectedEdge> edge_store;
+  /// many lights, their heap pages faulted in afresh every frame). Only the
+  /// places project_polygon fills are constructed (UnconstructedArray).
+  util::UnconstructedArray<ProjectedEdge> edge_store;
   /// In huge pages (huge_pages.h): 176 bytes each, 24 MB with 16 lights,
-  /// which in 4 KiB pages took about 90 ms of page faults a frame.
-  std::vector<ProjectedPolygon, util::HugePageAllocator<ProjectedPolygon>> polygons;
+  /// which in 4 KiB pages took about 90 ms of page faults a frame. Each
+  /// constructed once, by the thread that projects it.
+  util::UnconstructedArray<ProjectedPolygon> polygons;
   /// Filled in parallel by prepare; left uninitialized until then (a
   /// trivial type, so no serial zeroing of 100k+ entries first).
   util::UninitializedVector<TableEdge> edges;

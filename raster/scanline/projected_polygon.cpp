@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -122,7 +123,8 @@ void project_edges(ProjectedPolygon& out, std::uint32_t index, const CameraSpace
     e.err_a = perr[k];
     e.err_b = perr[k1];
     e.polygon = index;
-    room[k] = e;
+    // Constructed here: the store's places are not (UnconstructedArray).
+    std::construct_at(&room[k], e);
   }
   out.edges = room.first(m);
 }

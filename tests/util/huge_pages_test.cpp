@@ -3,6 +3,7 @@
 // both hold what is written to them through every container operation;
 // while a ReuseHugePages lives, released blocks are kept for the next
 // request of their size, up to a cap; without one they go back at once.
+// UnconstructedArray takes such blocks and constructs nothing itself.
 #include <umbra/util/huge_pages.h>
 #include <umbra/util/uninitialized.h>
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 
 namespace umbra::raster {
@@ -147,6 +149,42 @@ TEST(HugePages, BlocksAreKeptOnlyWhileAReuseScopeLives) {
     EXPECT_EQ(util::cached_huge_page_bytes(), bytes * 3);
   }
   EXPECT_EQ(util::cached_huge_page_bytes(), 0u);  // the last scope released them
+}
+
+/// A type whose default constructor writes (as the scanline's projected
+/// polygons and edges do), which UninitializedVector would construct.
+struct Written {
+  std::uint64_t value = 42;
+  std::uint64_t pad[7] = {};
+};
+
+TEST(HugePages, UnconstructedArraysWriteNothingBeforeTheOwnerConstructs) {
+  const util::ReuseHugePages reuse;
+  util::release_cached_huge_pages();
+  constexpr std::size_t n = (std::size_t{4} << 20) / sizeof(Written);  // 4 MiB
+  // A block left holding a pattern, then taken back by the array.
+  auto* block = static_cast<std::uint64_t*>(util::map_huge_pages(n * sizeof(Written)));
+  for (std::size_t k = 0; k < n * 8; ++k) block[k] = 7;
+  util::unmap_huge_pages(block, n * sizeof(Written));
+  util::UnconstructedArray<Written> array(n);
+  ASSERT_EQ(static_cast<void*>(array.data()), static_cast<void*>(block));
+  EXPECT_EQ(array.size(), n);
+  EXPECT_EQ(address(array.data()) % kTwoMiB, 0u);
+  // Nothing constructed: the pattern is still there, not Written's 42s.
+  EXPECT_EQ(block[0], 7u);
+  EXPECT_EQ(block[n * 8 - 1], 7u);
+  std::construct_at(&array[1], Written{.value = 5});
+  EXPECT_EQ(array[1].value, 5u);
+  EXPECT_EQ(block[8], 5u);
+  EXPECT_EQ(block[0], 7u);  // its neighbours untouched
+  // Moving hands the block over; the source is empty.
+  util::UnconstructedArray<Written> moved = std::move(array);
+  EXPECT_EQ(moved.size(), n);
+  EXPECT_EQ(moved[1].value, 5u);
+  EXPECT_EQ(array.size(), 0u);  // a moved-from array is empty
+  EXPECT_EQ(array.data(), nullptr);
+  const util::UnconstructedArray<Written> none(0);
+  EXPECT_EQ(none.begin(), none.end());
 }
 
 }  // namespace
