@@ -4,7 +4,8 @@
 // lights and 1280x720) are written in full by the worker threads, so zeroing
 // them first on one thread is wasted time; untouched, their pages are also
 // first touched by the thread that fills them. Large ones take huge pages
-// (huge_pages.h).
+// (huge_pages.h). Beside it, UnconstructedArray: room whose elements the
+// owner constructs one by one, for types whose construction writes.
 #include <umbra/util/huge_pages.h>
 
 #include <cstddef>
