@@ -53,13 +53,9 @@ void* take_cached(std::size_t size) {
 
 void release_block(void* block, std::size_t size) noexcept;
 
-/// Keeps `block` (rounded `size`) for reuse; what no longer fits under the
-/// cap (the oldest blocks, or this one if it alone exceeds it) is released.
+/// Keeps `block` (rounded `size`, at most the cap) for reuse; the oldest
+/// kept blocks that no longer fit under the cap are released.
 void cache_block(void* block, std::size_t size) noexcept {
-  if (size > kHugePageCacheBytes) {
-    release_block(block, size);
-    return;
-  }
   std::vector<std::pair<void*, std::size_t>> evicted;
   {
     BlockCache& cache = block_cache();
@@ -106,10 +102,12 @@ void* map_huge_pages(std::size_t bytes) {
 }
 
 void unmap_huge_pages(void* block, std::size_t bytes) noexcept {
-  if (reuse_scopes.load(std::memory_order_acquire) > 0)
-    cache_block(block, round_up(bytes));
+  // Kept only inside a scope, and never a block the cap cannot hold.
+  const std::size_t size = round_up(bytes);
+  if (size <= kHugePageCacheBytes && reuse_scopes.load(std::memory_order_acquire) > 0)
+    cache_block(block, size);
   else
-    release_block(block, round_up(bytes));
+    release_block(block, size);
 }
 
 ReuseHugePages::ReuseHugePages() noexcept { reuse_scopes.fetch_add(1, std::memory_order_acq_rel); }
