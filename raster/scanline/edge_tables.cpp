@@ -272,10 +272,14 @@ EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPol
   scene.polygons = util::UnconstructedArray<ProjectedPolygon>(input.size());
   const std::span<ProjectedEdge> store(scene.edge_store.data(), scene.edge_store.size());
   util::parallel_for_blocks(input.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
+    // Placement new from the call, not std::construct_at: its argument is a
+    // reference, so the polygon was built on the stack and copied (176
+    // bytes, 27 % of the pass's own samples); a prvalue initializer is
+    // built in place (with project_polygon's named return value).
     for (std::size_t k = begin; k < end; ++k)
-      std::construct_at(&scene.polygons[k],
-                        project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
-                                        store.subspan(room[k], room[k + 1] - room[k])));
+      ::new (static_cast<void*>(&scene.polygons[k]))
+          ProjectedPolygon(project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
+                                           store.subspan(room[k], room[k + 1] - room[k])));
   });
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
