@@ -1,11 +1,13 @@
 // Preparing the scanline's input (raster/scanline/edge_tables.h): projection, the edge
 // table and its bucket sorts, the strips' geometry.
 #include <umbra/raster/scanline/edge_tables.h>
+#include <umbra/raster/scanline/row_sort.h>
 #include <umbra/util/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -17,32 +19,6 @@ namespace umbra::raster::detail {
 RowRange active_rows(double y0, double y1, int height) {
   return {first_column(std::min(y0, y1), height), first_column(std::max(y0, y1), height) - 1};
 }
-namespace {
-
-/// The surfaces' edges by first row of `range` (shadow polygons' edges go
-/// to the shadow pass polygon by polygon instead, see shadow_spans).
-void bucket_sort(std::span<const TableEdge> edges, RowRange TableEdge::*range, int height,
-                 util::HugeVector<std::uint32_t>& order, std::vector<std::size_t>& bucket,
-                 util::HugeVector<int>& last) {
-  const auto counted = [&](const TableEdge& e) {
-    return !e.shadow && (e.*range).first <= (e.*range).last;
-  };
-  bucket.assign(static_cast<std::size_t>(height) + 2, 0);
-  for (const TableEdge& e : edges)
-    if (counted(e)) ++bucket[(e.*range).first + 1];
-  for (int j = 0; j <= height; ++j) bucket[j + 1] += bucket[j];
-  // Made afresh every frame, 1-2 MB each with many lights: whole huge pages.
-  util::reserve_huge(order, bucket[height]);
-  util::reserve_huge(last, bucket[height]);
-  order.assign(bucket[height], 0);
-  std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
-  for (std::uint32_t k = 0; k < edges.size(); ++k)
-    if (counted(edges[k])) order[fill[(edges[k].*range).first]++] = k;
-  last.resize(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) last[k] = (edges[order[k]].*range).last;
-}
-
-}  // namespace
 
 /// Over the box, the plane's depth t = n·p0 / (n·d), d = (sx, sy, 1), is
 /// smallest at a corner when n·d keeps one sign, and its error bound
@@ -229,25 +205,77 @@ void shadow_tables(EdgeTables& scene, std::span<const std::size_t> first_edge, u
   }
 }
 
-/// Input errors are found here, in polygon order, before any work is shared
-/// out: the first bad polygon is the one reported, whatever the threads.
-void check_input(std::span<const RasterPolygon> input, std::size_t lights,
-                 std::span<const std::uint8_t> group_start) {
-  for (std::size_t k = 0; k < input.size(); ++k) {
-    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].light >= lights)
-      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
-                                  " names light " + std::to_string(input[k].light) + " of " +
-                                  std::to_string(lights));
-    if (input[k].kind == RasterPolygon::Kind::shadow && input[k].group >= 0 &&
-        static_cast<std::size_t>(input[k].group) >= group_start.size())
-      throw std::invalid_argument("scanline_render: shadow polygon " + std::to_string(k) +
-                                  " names group " + std::to_string(input[k].group) + " of " +
-                                  std::to_string(group_start.size()));
-    for (const Vec3& v : input[k].vertices)
-      if (!geometry::is_finite(v))
-        throw std::invalid_argument("scanline_render: polygon " + std::to_string(k) +
-                                    " has a non-finite vertex");
+/// What is wrong with input polygon k, or nothing.
+std::optional<std::string> input_error(const RasterPolygon& polygon, std::size_t k,
+                                       std::size_t lights, std::size_t groups) {
+  if (polygon.kind == RasterPolygon::Kind::shadow && polygon.light >= lights)
+    return "scanline_render: shadow polygon " + std::to_string(k) + " names light " +
+           std::to_string(polygon.light) + " of " + std::to_string(lights);
+  if (polygon.kind == RasterPolygon::Kind::shadow && polygon.group >= 0 &&
+      static_cast<std::size_t>(polygon.group) >= groups)
+    return "scanline_render: shadow polygon " + std::to_string(k) + " names group " +
+           std::to_string(polygon.group) + " of " + std::to_string(groups);
+  for (const Vec3& v : polygon.vertices)
+    if (!geometry::is_finite(v))
+      return "scanline_render: polygon " + std::to_string(k) + " has a non-finite vertex";
+  return std::nullopt;
+}
+
+/// One pass over the input, shared out: its errors, its box (with the eye)
+/// and each polygon's edge room. Input errors are reported in polygon order,
+/// the first bad polygon whatever the threads, before any other work. Each
+/// polygon's vertices lie in a heap block of their own, which the checks
+/// and the box walked one after the other on one thread.
+struct InputPass {
+  Vec3 lo, hi;                         ///< the box of every vertex and the eye
+  util::HugeVector<std::size_t> room;  ///< polygon k's edges start at room[k]
+};
+
+InputPass input_pass(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
+                     std::size_t lights, std::size_t groups, unsigned threads) {
+  const std::size_t blocks = (input.size() + kBlock - 1) / kBlock;
+  std::vector<std::size_t> first_bad(blocks, input.size());
+  std::vector<Vec3> block_lo(blocks, frame.eye), block_hi(blocks, frame.eye);
+  InputPass out;
+  util::reserve_huge(out.room, input.size() + 1);
+  out.room.resize(input.size() + 1);
+  out.room[0] = 0;
+  util::parallel_for_blocks(input.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
+    const std::size_t b = begin / kBlock;
+    Vec3 lo = frame.eye, hi = frame.eye;
+    for (std::size_t k = begin; k < end; ++k) {
+      const RasterPolygon& polygon = input[k];
+      if (polygon.kind == RasterPolygon::Kind::shadow &&
+          (polygon.light >= lights ||
+           (polygon.group >= 0 && static_cast<std::size_t>(polygon.group) >= groups))) {
+        first_bad[b] = k;
+        return;
+      }
+      for (const Vec3& v : polygon.vertices) {
+        if (!geometry::is_finite(v)) {
+          first_bad[b] = k;
+          return;
+        }
+        lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
+        hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+      }
+      out.room[k + 1] = edge_room(polygon.vertices.size());
+    }
+    block_lo[b] = lo;
+    block_hi[b] = hi;
+  });
+  for (const std::size_t k : first_bad)
+    if (k < input.size()) throw std::invalid_argument(*input_error(input[k], k, lights, groups));
+  // Minima and maxima of finite values: the same box in any order.
+  out.lo = out.hi = frame.eye;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    out.lo = {std::min(out.lo.x, block_lo[b].x), std::min(out.lo.y, block_lo[b].y),
+              std::min(out.lo.z, block_lo[b].z)};
+    out.hi = {std::max(out.hi.x, block_hi[b].x), std::max(out.hi.y, block_hi[b].y),
+              std::max(out.hi.z, block_hi[b].z)};
   }
+  for (std::size_t k = 0; k < input.size(); ++k) out.room[k + 1] += out.room[k];
+  return out;
 }
 
 }  // namespace
@@ -255,42 +283,47 @@ void check_input(std::span<const RasterPolygon> input, std::size_t lights,
 EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPolygon> input,
                    std::size_t lights, std::span<const std::uint8_t> group_start,
                    unsigned threads) {
-  check_input(input, lights, group_start);
+  const InputPass pass = input_pass(frame, input, lights, group_start.size(), threads);
   EdgeTables scene;
   scene.lights = lights;
   scene.group_start.assign(group_start.begin(), group_start.end());
-  scene.camera = make_camera_space(frame, input);
+  scene.camera = camera_space(frame, pass.lo, pass.hi);
   const CameraSpace& camera = scene.camera;
   // With many lights there are 100k+ polygons to project and edges to
   // table: shared out, each written to its own slot.
-  util::HugeVector<std::size_t> room;
-  util::reserve_huge(room, input.size() + 1);
-  room.assign(input.size() + 1, 0);
-  for (std::size_t k = 0; k < input.size(); ++k)
-    room[k + 1] = room[k] + edge_room(input[k].vertices.size());
+  const util::HugeVector<std::size_t>& room = pass.room;
   scene.edge_store = util::UnconstructedArray<ProjectedEdge>(room.back());
   scene.polygons = util::UnconstructedArray<ProjectedPolygon>(input.size());
   const std::span<ProjectedEdge> store(scene.edge_store.data(), scene.edge_store.size());
+  // Each polygon's edge count and whether it is degenerate, taken while it
+  // is in the cache: a pass after over the 168-byte polygons was serial.
+  util::HugeVector<std::size_t> first_edge;
+  util::reserve_huge(first_edge, input.size() + 1);
+  first_edge.resize(input.size() + 1);
+  first_edge[0] = 0;
+  util::HugeVector<std::uint8_t> degenerate;
+  util::reserve_huge(degenerate, input.size());
+  degenerate.resize(input.size());
   util::parallel_for_blocks(input.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
     // Placement new from the call, not std::construct_at: its argument is a
     // reference, so the polygon was built on the stack and copied (176
     // bytes, 27 % of the pass's own samples); a prvalue initializer is
     // built in place (with project_polygon's named return value).
-    for (std::size_t k = begin; k < end; ++k)
-      ::new (static_cast<void*>(&scene.polygons[k]))
-          ProjectedPolygon(project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
-                                           store.subspan(room[k], room[k + 1] - room[k])));
+    for (std::size_t k = begin; k < end; ++k) {
+      const ProjectedPolygon& polygon =
+          *::new (static_cast<void*>(&scene.polygons[k]))
+              ProjectedPolygon(project_polygon(input[k], static_cast<std::uint32_t>(k), camera,
+                                               store.subspan(room[k], room[k + 1] - room[k])));
+      first_edge[k + 1] = polygon.edges.size();
+      degenerate[k] = polygon.status == ProjectedPolygon::Status::degenerate;
+    }
   });
   const double ah = frame.a * frame.h;
   // |d| / |d_z| over all sample rays, with 1% slack for rounding.
   const double ray_slant = 1.01 * std::sqrt(1.0 + ah * ah + frame.h * frame.h);
-  util::HugeVector<std::size_t> first_edge;
-  util::reserve_huge(first_edge, scene.polygons.size() + 1);
-  first_edge.assign(scene.polygons.size() + 1, 0);
   for (std::uint32_t k = 0; k < scene.polygons.size(); ++k) {
-    const ProjectedPolygon& polygon = scene.polygons[k];
-    if (polygon.status == ProjectedPolygon::Status::degenerate) scene.degenerate.push_back(k);
-    first_edge[k + 1] = first_edge[k] + polygon.edges.size();
+    if (degenerate[k]) scene.degenerate.push_back(k);
+    first_edge[k + 1] += first_edge[k];
   }
   scene.edges.resize(first_edge.back());
   util::reserve_huge(scene.cullable, scene.polygons.size());
@@ -326,10 +359,20 @@ EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPol
                             std::min(polygon.bbox_y1 + 1, static_cast<double>(frame.height)));
         }
       });
-  bucket_sort(scene.edges, &TableEdge::scan, frame.height, scene.by_scan_row, scene.scan_bucket,
-              scene.by_scan_row_last);
-  bucket_sort(scene.edges, &TableEdge::near, frame.height, scene.by_near_row, scene.near_bucket,
-              scene.by_near_row_last);
+  // The surfaces' edges by first row of each range (shadow polygons' edges
+  // go to the shadow pass polygon by polygon instead, see shadow_tables).
+  const auto by_row = [&](RowRange TableEdge::*range, util::HugeVector<std::uint32_t>& order,
+                          std::vector<std::size_t>& bucket, util::HugeVector<int>& last) {
+    sort_by_row(
+        scene.edges.size(), frame.height, threads,
+        [&](std::size_t k) {
+          const TableEdge& e = scene.edges[k];
+          return !e.shadow && (e.*range).first <= (e.*range).last ? (e.*range).first : -1;
+        },
+        [&](std::size_t k) { return (scene.edges[k].*range).last; }, order, bucket, last);
+  };
+  by_row(&TableEdge::scan, scene.by_scan_row, scene.scan_bucket, scene.by_scan_row_last);
+  by_row(&TableEdge::near, scene.by_near_row, scene.near_bucket, scene.by_near_row_last);
   shadow_tables(scene, first_edge, threads);
   return scene;
 }

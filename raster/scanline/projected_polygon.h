@@ -48,6 +48,9 @@ struct CameraSpace {
 
 CameraSpace make_camera_space(const geometry::CameraFrame& frame,
                               std::span<const RasterPolygon> polygons);
+/// The same from the box [lo, hi] of the polygons' vertices and the eye
+/// (prepare finds it in parallel, with the input's checks).
+CameraSpace camera_space(const geometry::CameraFrame& frame, const Vec3& lo, const Vec3& hi);
 
 /// One edge of a clipped, projected polygon.
 struct ProjectedEdge {
