@@ -434,7 +434,7 @@ ShadowVolumes build_shadow_volumes(const Scene& scene, std::span<const ModelTabl
   if (point_lights >= 4)
     util::parallel_for(scene.models.size(), options.threads, [&](std::size_t mi) {
       if (scene.models[mi].casts_shadows)
-        share.runs[mi] = triangle_runs(scene.models[mi], tables[mi].surfaces);
+        share.runs[mi] = triangle_runs(scene.models[mi], tables[mi].surfaces, options.threads);
     });
 
   // The lights are independent: each builds its own part on some thread;

@@ -27,7 +27,9 @@ struct TriangleRuns {
   std::vector<double> magnitude;
 };
 
-/// The runs of `model`, whose polygons' surfaces are `surfaces`.
-TriangleRuns triangle_runs(const Model& model, std::span<const PolygonSurface> surfaces);
+/// The runs of `model`, whose polygons' surfaces are `surfaces`, made on up
+/// to `threads` threads (0: every CPU); the same runs for any number.
+TriangleRuns triangle_runs(const Model& model, std::span<const PolygonSurface> surfaces,
+                           unsigned threads = 1);
 
 }  // namespace umbra::geometry
