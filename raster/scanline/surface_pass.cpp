@@ -103,8 +103,9 @@ void BandWorker::measure(DepthEntry& entry, const Vec3& d) const {
 void BandWorker::shade_span(int i0, int i1, int j) {
   const double z_near = scene_.camera.z_near;
   if (surfaces_.size() == 1) {
-    // One surface (most spans: ~1.1 surfaces a shaded pixel on bunny00):
-    // the loop below with one entry, without its list to keep in order.
+    // One surface (90 % of the shaded pixels of bunny00's lightless frame,
+    // 96 % of refined_elephant's): the loop below with one entry, without
+    // its list to keep in order.
     const ProjectedPolygon& surface = scene_.polygons[surfaces_.front()];
     for (int i = i0; i < i1; ++i) {
       const Vec3& d = ray_[row_base_ + i];
