@@ -9,6 +9,7 @@
 #include <umbra/util/huge_pages.h>
 #include <umbra/util/parallel_for.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -23,13 +24,16 @@ template <class Row, class Last>
 void sort_by_row(std::size_t count, int height, unsigned threads, const Row& row,
                  const Last& last_of, util::HugeVector<std::uint32_t>& order,
                  std::vector<std::size_t>& bucket, util::HugeVector<int>& last) {
-  constexpr std::size_t kBlock = 16384;
+  // At most 64 blocks: the counts take blocks × rows places, which for
+  // millions of edges on a tall, narrow image would outgrow the frame.
+  // Any split gives the same order.
+  const std::size_t block = std::max<std::size_t>(16384, (count + 63) / 64);
   const auto rows = static_cast<std::size_t>(height);
-  const std::size_t blocks = (count + kBlock - 1) / kBlock;
+  const std::size_t blocks = (count + block - 1) / block;
   // place[b·rows + j]: block b's items of row j, then where the first goes.
   std::vector<std::size_t> place(blocks * rows, 0);
-  util::parallel_for_blocks(count, kBlock, threads, [&](std::size_t begin, std::size_t end) {
-    std::size_t* counts = place.data() + begin / kBlock * rows;
+  util::parallel_for_blocks(count, block, threads, [&](std::size_t begin, std::size_t end) {
+    std::size_t* counts = place.data() + begin / block * rows;
     for (std::size_t k = begin; k < end; ++k)
       if (const int j = row(k); j >= 0) ++counts[j];
   });
@@ -49,8 +53,8 @@ void sort_by_row(std::size_t count, int height, unsigned threads, const Row& row
   util::reserve_huge(last, total);
   order.resize(total);
   last.resize(total);
-  util::parallel_for_blocks(count, kBlock, threads, [&](std::size_t begin, std::size_t end) {
-    std::size_t* next = place.data() + begin / kBlock * rows;
+  util::parallel_for_blocks(count, block, threads, [&](std::size_t begin, std::size_t end) {
+    std::size_t* next = place.data() + begin / block * rows;
     for (std::size_t k = begin; k < end; ++k) {
       const int j = row(k);
       if (j < 0) continue;

@@ -23,35 +23,38 @@ namespace {
 using geometry::Vec3;
 
 TEST(RowSort, IsTheOrderOfOnePassInIndexOrderForAnyThreads) {
-  // 100,003 items (several blocks of 16,384, the last partial) on 720 rows,
-  // a tenth left out; the reference: a stable sort by row.
-  constexpr int kHeight = 720;
-  std::mt19937 rng(20261207);
-  std::uniform_int_distribution<int> pick(-72, kHeight - 1);
-  std::vector<int> row(100003);
-  for (int& r : row) r = std::max(pick(rng), -1);
-  std::vector<std::uint32_t> expected;
-  for (std::uint32_t k = 0; k < row.size(); ++k)
-    if (row[k] >= 0) expected.push_back(k);
-  std::stable_sort(expected.begin(), expected.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return row[a] < row[b]; });
-  for (const unsigned threads : {1u, 2u, 3u, 8u}) {
-    util::HugeVector<std::uint32_t> order;
-    std::vector<std::size_t> bucket;
-    util::HugeVector<int> last;
-    sort_by_row(
-        row.size(), kHeight, threads, [&](std::size_t k) { return row[k]; },
-        [&](std::size_t k) { return 3 * static_cast<int>(k); }, order, bucket, last);
-    ASSERT_EQ(order.size(), expected.size()) << threads;
-    EXPECT_TRUE(std::equal(order.begin(), order.end(), expected.begin())) << threads;
-    ASSERT_EQ(bucket.size(), static_cast<std::size_t>(kHeight) + 2);
-    for (int j = 0; j < kHeight; ++j)
-      for (std::size_t i = bucket[j]; i < bucket[j + 1]; ++i) ASSERT_EQ(row[order[i]], j) << i;
-    EXPECT_EQ(bucket[kHeight], expected.size());
-    EXPECT_EQ(bucket[kHeight + 1], expected.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      ASSERT_EQ(last[i], 3 * static_cast<int>(order[i])) << i;
+  // 100,003 items on 720 rows (several blocks of 16,384, the last partial)
+  // and 1,500,007 on 97 (64 blocks, the cap, of 23,438), a tenth left out;
+  // the reference: a stable sort by row.
+  for (const auto& [items, height] : {std::pair{100003, 720}, std::pair{1500007, 97}}) {
+    std::mt19937 rng(20261207);
+    std::uniform_int_distribution<int> pick(-height / 10, height - 1);
+    std::vector<int> row(static_cast<std::size_t>(items));
+    for (int& r : row) r = std::max(pick(rng), -1);
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t k = 0; k < row.size(); ++k)
+      if (row[k] >= 0) expected.push_back(k);
+    std::stable_sort(expected.begin(), expected.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return row[a] < row[b]; });
+    for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+      util::HugeVector<std::uint32_t> order;
+      std::vector<std::size_t> bucket;
+      util::HugeVector<int> last;
+      sort_by_row(
+          row.size(), height, threads, [&](std::size_t k) { return row[k]; },
+          [&](std::size_t k) { return 3 * static_cast<int>(k); }, order, bucket, last);
+      ASSERT_EQ(order.size(), expected.size()) << threads;
+      EXPECT_TRUE(std::equal(order.begin(), order.end(), expected.begin())) << threads;
+      ASSERT_EQ(bucket.size(), static_cast<std::size_t>(height) + 2);
+      for (int j = 0; j < height; ++j)
+        for (std::size_t i = bucket[j]; i < bucket[j + 1]; ++i) ASSERT_EQ(row[order[i]], j) << i;
+      EXPECT_EQ(bucket[height], expected.size());
+      EXPECT_EQ(bucket[height + 1], expected.size());
+      for (std::size_t i = 0; i < order.size(); ++i)
+        ASSERT_EQ(last[i], 3 * static_cast<int>(order[i])) << i;
+    }
   }
+  constexpr int kHeight = 720;
   util::HugeVector<std::uint32_t> order;
   std::vector<std::size_t> bucket;
   util::HugeVector<int> last;
