@@ -245,17 +245,12 @@ InputPass input_pass(const geometry::CameraFrame& frame, std::span<const RasterP
     Vec3 lo = frame.eye, hi = frame.eye;
     for (std::size_t k = begin; k < end; ++k) {
       const RasterPolygon& polygon = input[k];
-      if (polygon.kind == RasterPolygon::Kind::shadow &&
-          (polygon.light >= lights ||
-           (polygon.group >= 0 && static_cast<std::size_t>(polygon.group) >= groups))) {
+      // One test for both places (no message is made unless it fails).
+      if (input_error(polygon, k, lights, groups)) {
         first_bad[b] = k;
         return;
       }
       for (const Vec3& v : polygon.vertices) {
-        if (!geometry::is_finite(v)) {
-          first_bad[b] = k;
-          return;
-        }
         lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
         hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
       }
