@@ -35,6 +35,18 @@ inline bool before(const DepthEntry& a, const DepthEntry& b) {
   return a.t < b.t || (a.t == b.t && a.polygon < b.polygon);
 }
 
+/// Whether floating point leaves entry e undecided at a pixel, where
+/// `visible` is the visible entry (null: none; e itself: no comparison). A
+/// depth error bound that is not finite means the ray (nearly) lies in the
+/// polygon's plane: nothing about this polygon is decided. Then t against
+/// 0 (in front of the eye or behind it) and against the visible depth
+/// (which surface is in front; whether a shadow polygon is pierced before
+/// the visible point). Inline: the surface pass asks per pixel and entry.
+inline bool undecided(const DepthEntry& e, const DepthEntry* visible, double z_near) {
+  return !std::isfinite(e.err) || too_close(e.t, e.err, 0.0, 0.0, z_near) ||
+         (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near));
+}
+
 /// One worker's scanlines, with its own active edge lists.
 class BandWorker {
  public:

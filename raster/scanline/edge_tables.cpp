@@ -227,7 +227,7 @@ std::optional<std::string> input_error(const RasterPolygon& polygon, std::size_t
 /// polygon's vertices lie in a heap block of their own, which the checks
 /// and the box walked one after the other on one thread.
 struct InputPass {
-  Vec3 lo, hi;                         ///< the box of every vertex and the eye
+  geometry::Box box;                   ///< of every vertex and the eye
   util::HugeVector<std::size_t> room;  ///< polygon k's edges start at room[k]
 };
 
@@ -235,14 +235,16 @@ InputPass input_pass(const geometry::CameraFrame& frame, std::span<const RasterP
                      std::size_t lights, std::size_t groups, unsigned threads) {
   const std::size_t blocks = (input.size() + kBlock - 1) / kBlock;
   std::vector<std::size_t> first_bad(blocks, input.size());
-  std::vector<Vec3> block_lo(blocks, frame.eye), block_hi(blocks, frame.eye);
+  // Each block's box starts at the eye, so none is empty.
+  const geometry::Box eye{frame.eye, frame.eye};
+  std::vector<geometry::Box> block_box(blocks, eye);
   InputPass out;
   util::reserve_huge(out.room, input.size() + 1);
   out.room.resize(input.size() + 1);
   out.room[0] = 0;
   util::parallel_for_blocks(input.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
     const std::size_t b = begin / kBlock;
-    Vec3 lo = frame.eye, hi = frame.eye;
+    geometry::Box box = eye;
     for (std::size_t k = begin; k < end; ++k) {
       const RasterPolygon& polygon = input[k];
       // One test for both places (no message is made unless it fails).
@@ -250,25 +252,16 @@ InputPass input_pass(const geometry::CameraFrame& frame, std::span<const RasterP
         first_bad[b] = k;
         return;
       }
-      for (const Vec3& v : polygon.vertices) {
-        lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-        hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-      }
+      for (const Vec3& v : polygon.vertices) box.extend(v);
       out.room[k + 1] = edge_room(polygon.vertices.size());
     }
-    block_lo[b] = lo;
-    block_hi[b] = hi;
+    block_box[b] = box;
   });
   for (const std::size_t k : first_bad)
     if (k < input.size()) throw std::invalid_argument(*input_error(input[k], k, lights, groups));
   // Minima and maxima of finite values: the same box in any order.
-  out.lo = out.hi = frame.eye;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    out.lo = {std::min(out.lo.x, block_lo[b].x), std::min(out.lo.y, block_lo[b].y),
-              std::min(out.lo.z, block_lo[b].z)};
-    out.hi = {std::max(out.hi.x, block_hi[b].x), std::max(out.hi.y, block_hi[b].y),
-              std::max(out.hi.z, block_hi[b].z)};
-  }
+  out.box = eye;
+  for (const geometry::Box& box : block_box) out.box.extend(box);
   for (std::size_t k = 0; k < input.size(); ++k) out.room[k + 1] += out.room[k];
   return out;
 }
@@ -282,7 +275,7 @@ EdgeTables prepare(const geometry::CameraFrame& frame, std::span<const RasterPol
   EdgeTables scene;
   scene.lights = lights;
   scene.group_start.assign(group_start.begin(), group_start.end());
-  scene.camera = camera_space(frame, pass.lo, pass.hi);
+  scene.camera = camera_space(frame, pass.box);
   const CameraSpace& camera = scene.camera;
   // With many lights there are 100k+ polygons to project and edges to
   // table: shared out, each written to its own slot.

@@ -133,19 +133,16 @@ void project_edges(ProjectedPolygon& out, std::uint32_t index, const CameraSpace
 
 CameraSpace make_camera_space(const geometry::CameraFrame& frame,
                               std::span<const RasterPolygon> polygons) {
-  Vec3 lo = frame.eye, hi = frame.eye;
+  geometry::Box box{frame.eye, frame.eye};
   for (const RasterPolygon& polygon : polygons)
-    for (const Vec3& v : polygon.vertices) {
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-    }
-  return camera_space(frame, lo, hi);
+    for (const Vec3& v : polygon.vertices) box.extend(v);
+  return camera_space(frame, box);
 }
 
-CameraSpace camera_space(const geometry::CameraFrame& frame, const Vec3& lo, const Vec3& hi) {
+CameraSpace camera_space(const geometry::CameraFrame& frame, const geometry::Box& box) {
   CameraSpace camera;
   camera.frame = frame;
-  double extent = length(hi - lo);
+  double extent = length(box.hi - box.lo);
   if (!(extent > 0) || !std::isfinite(extent)) extent = 1.0;
   camera.z_near = 1e-9 * extent;
   camera.pixel_size = 2.0 * frame.h / frame.height;

@@ -9,6 +9,7 @@
 // spaces; only rounding differs. Screen coordinates are (x/z, y/z) on the
 // plane z = 1 (sample_ray's sx, sy); pixel coordinates put the centre of
 // pixel (i, j) at (i + 0.5, j + 0.5), x to the right, y down.
+#include <umbra/geometry/box.h>
 #include <umbra/geometry/sample_ray.h>
 #include <umbra/raster/scanline/scanline.h>
 
@@ -48,9 +49,9 @@ struct CameraSpace {
 
 CameraSpace make_camera_space(const geometry::CameraFrame& frame,
                               std::span<const RasterPolygon> polygons);
-/// The same from the box [lo, hi] of the polygons' vertices and the eye
-/// (prepare finds it in parallel, with the input's checks).
-CameraSpace camera_space(const geometry::CameraFrame& frame, const Vec3& lo, const Vec3& hi);
+/// The same from the box of the polygons' vertices and the eye (prepare
+/// finds it in parallel, with the input's checks).
+CameraSpace camera_space(const geometry::CameraFrame& frame, const geometry::Box& box);
 
 /// One edge of a clipped, projected polygon.
 struct ProjectedEdge {

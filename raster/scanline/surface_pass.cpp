@@ -106,20 +106,17 @@ void BandWorker::shade_span(int i0, int i1, int j) {
     // One surface (90 % of the shaded pixels of bunny00's lightless frame,
     // 96 % of refined_elephant's): the loop below with one entry, without
     // its list to keep in order.
-    const ProjectedPolygon& surface = scene_.polygons[surfaces_.front()];
+    DepthEntry e{0, 0, surfaces_.front()};
+    const std::int32_t id = scene_.polygons[e.polygon].id;
     for (int i = i0; i < i1; ++i) {
-      const Vec3& d = ray_[row_base_ + i];
-      double t = surface.depth(d);
-      if (std::isnan(t)) t = kInfinity;  // ray in the plane; flagged by its error
-      const double err = surface.depth_error(d, t);
+      measure(e, ray_[row_base_ + i]);
       const std::size_t p = pixel(i, j);
-      if (t > 0) {
-        result_.visible[p] = surface.id;
-        result_.depth[p] = t;
-        visible_error_[row_base_ + i] = err;
+      if (e.t > 0) {
+        result_.visible[p] = id;
+        result_.depth[p] = e.t;
+        visible_error_[row_base_ + i] = e.err;
       }
-      if (!std::isfinite(err) || too_close(t, err, 0.0, 0.0, z_near))
-        result_.uncertain[p] |= kSurfaceUncertain;
+      if (undecided(e, nullptr, z_near)) result_.uncertain[p] |= kSurfaceUncertain;
     }
     return;
   }
@@ -142,17 +139,7 @@ void BandWorker::shade_span(int i0, int i1, int j) {
       }
     const std::size_t p = pixel(i, j);
     bool uncertain = false;
-    // A depth error bound that is not finite means the ray (nearly) lies
-    // in the polygon's plane: nothing about this polygon is decided. Then
-    // t against 0 (in front of the eye or behind it) and against the
-    // visible depth (which surface is in front; whether a shadow polygon is
-    // pierced before the visible point).
-    const auto check = [&](const DepthEntry& e) {
-      if (!std::isfinite(e.err) || too_close(e.t, e.err, 0.0, 0.0, z_near) ||
-          (visible && &e != visible && too_close(e.t, e.err, visible->t, visible->err, z_near)))
-        uncertain = true;
-    };
-    for (const DepthEntry& e : order_) check(e);
+    for (const DepthEntry& e : order_) uncertain = uncertain || undecided(e, visible, z_near);
     if (visible) {
       result_.visible[p] = scene_.polygons[visible->polygon].id;
       result_.depth[p] = visible->t;

@@ -78,6 +78,41 @@ std::size_t entries_of(const geometry::IndexedPolygon& p) {
   return 0;
 }
 
+/// Polygon i's entries and raster polygons, at places `slot` on.
+void add_entries(const geometry::SceneIndex& index, std::uint32_t i, std::size_t slot,
+                 SurfaceTable& table) {
+  const geometry::IndexedPolygon& p = index.polygons()[i];
+  const auto add = [&](std::uint32_t triangle, std::vector<Vec3> vertices) {
+    table.entries[slot] = surface_entry(
+        index, geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false});
+    RasterPolygon& raster = table.polygons[slot];
+    raster.vertices = std::move(vertices);
+    raster.kind = RasterPolygon::Kind::surface;
+    raster.id = static_cast<std::uint32_t>(slot);
+    ++slot;
+  };
+  switch (p.surface->shape) {
+    case geometry::PolygonShape::degenerate:
+      break;
+    case geometry::PolygonShape::planar: {
+      // Even-odd interior of the whole polygon = the fan's parity.
+      std::vector<Vec3> vertices;
+      const std::size_t size = index.size_of(p);
+      vertices.reserve(size);
+      for (std::size_t k = 0; k < size; ++k)
+        vertices.push_back(index.vertex(p, static_cast<std::uint32_t>(k)));
+      add(0, std::move(vertices));
+      break;
+    }
+    case geometry::PolygonShape::non_planar:
+      for (std::uint32_t t = 0; t < p.surface->triangles.size(); ++t) {
+        const auto& local = p.surface->triangles[t].local;
+        add(t, {index.vertex(p, local[0]), index.vertex(p, local[1]), index.vertex(p, local[2])});
+      }
+      break;
+  }
+}
+
 }  // namespace
 
 SurfaceTable surface_table(const geometry::SceneIndex& index, unsigned threads) {
@@ -94,44 +129,11 @@ SurfaceTable surface_table(const geometry::SceneIndex& index, unsigned threads) 
   table.entries.resize(first.back());
   table.polygons.resize(first.back());
   constexpr std::size_t kBlock = 2048;
-  util::parallel_for_blocks(
-      polygons.size(), kBlock, threads, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t n = begin; n < end; ++n) {
-          const auto i = static_cast<std::uint32_t>(n);
-          const geometry::IndexedPolygon& p = polygons[i];
-          std::size_t slot = first[n];
-          const auto add = [&](std::uint32_t triangle, std::vector<Vec3> vertices) {
-            table.entries[slot] = surface_entry(
-                index, geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false});
-            RasterPolygon& raster = table.polygons[slot];
-            raster.vertices = std::move(vertices);
-            raster.kind = RasterPolygon::Kind::surface;
-            raster.id = static_cast<std::uint32_t>(slot);
-            ++slot;
-          };
-          switch (p.surface->shape) {
-            case geometry::PolygonShape::degenerate:
-              break;
-            case geometry::PolygonShape::planar: {
-              // Even-odd interior of the whole polygon = the fan's parity.
-              std::vector<Vec3> vertices;
-              const std::size_t size = index.size_of(p);
-              vertices.reserve(size);
-              for (std::size_t k = 0; k < size; ++k)
-                vertices.push_back(index.vertex(p, static_cast<std::uint32_t>(k)));
-              add(0, std::move(vertices));
-              break;
-            }
-            case geometry::PolygonShape::non_planar:
-              for (std::uint32_t t = 0; t < p.surface->triangles.size(); ++t) {
-                const auto& local = p.surface->triangles[t].local;
-                add(t, {index.vertex(p, local[0]), index.vertex(p, local[1]),
-                        index.vertex(p, local[2])});
-              }
-              break;
-          }
-        }
-      });
+  util::parallel_for_blocks(polygons.size(), kBlock, threads,
+                            [&](std::size_t begin, std::size_t end) {
+                              for (std::size_t i = begin; i < end; ++i)
+                                add_entries(index, static_cast<std::uint32_t>(i), first[i], table);
+                            });
   return table;
 }
 
