@@ -148,6 +148,13 @@ class BandWorker {
   /// The band's shadow polygons, counted against its visible points; then its flags.
   void scan_shadows();
 
+  /// Crossings of one shadow polygon with one row kept in place; more go
+  /// to columns_ (scan_shadow).
+  static constexpr int kRowCrossings = 4;
+
+  /// Shadow polygon `polygon` over the band's rows.
+  void scan_shadow(std::uint32_t polygon);
+
   /// Even-odd: surface `polygon` enters or leaves the current span's list.
   void toggle(std::uint32_t polygon);
 
@@ -225,7 +232,7 @@ class BandWorker {
   util::HugeVector<Crossing> crossings_;    // the surfaces' active edge list, x-sorted
   int taken_ = 0;                           // bucket rows below this are in the lists
   int next_row_ = -1;                       // where the last chunk ended (-1: none yet)
-  std::vector<int> columns_;                // one shadow polygon's crossing columns on the row
+  std::vector<int> columns_;                // a shadow polygon's crossings on a crowded row
   util::HugeVector<Strip> strips_;          // the surfaces' strips that meet the band
   util::HugeVector<ActiveShadow> shadows_;  // shadow polygons whose span meets the band, in order
   util::HugeVector<std::uint32_t> live_;    // those not behind the band

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <span>
 
 namespace umbra::raster::detail {
 
@@ -60,55 +61,73 @@ void BandWorker::start_shadow_band() {
 /// twisted groups are settled per pixel afterwards, so the order of the
 /// visits changes no value.
 void BandWorker::scan_shadows() {
-  const int width = scene_.camera.frame.width;
-  for (const std::uint32_t polygon : live_) {
-    const ShadowSpan& span = scene_.shadow_spans[polygon];
-    const ProjectedPolygon& shadow = scene_.polygons[polygon];
-    // Only the rows of its light's window: no count of it is read elsewhere.
-    int j0 = band0_, j1 = band1_;
-    if (!windows_whole_) {
-      const PixelRect& window = result_.windows.rect(shadow.light);
-      j0 = std::max(j0, window.y0);
-      j1 = std::min(j1, window.y1);
-    }
-    for (int j = j0; j < j1; ++j) {
-      const double sy = row_sy_[j - band0_];
-      // A side polygon is convex: two crossings a row, kept in registers;
-      // any more (a clipped or general polygon) go through columns_, which
-      // the third crossing refills from the first two.
-      int two[2];
-      std::size_t found = 0;
-      for (std::uint32_t n = span.begin; n < span.end; ++n) {
-        const ShadowEdge& e = scene_.shadow_edges[n];
-        if (e.first > j || e.last < j) continue;
-        const int column = first_column(crossing_x(e.m, e.c, e.edge, j, sy), width);
-        if (found < 2) two[found] = column;
-        if (found == 2) columns_.assign(two, two + 2);
-        if (found >= 2) columns_.push_back(column);
-        ++found;
-      }
-      if (found == 0) continue;
-      row_base_ = static_cast<std::size_t>(j - band0_) * static_cast<std::size_t>(width);
-      // Pixel i is inside when an odd number of the polygon's crossings lie
-      // at columns <= i: the even-odd rule of the span walk, whose spans
-      // start at these columns. So: the pixels between consecutive pairs.
-      if (found == 1) {
-        shade_shadow(shadow, polygon, two[0], width, j);
-      } else if (found == 2) {
-        shade_shadow(shadow, polygon, std::min(two[0], two[1]), std::max(two[0], two[1]), j);
-      } else {
-        std::sort(columns_.begin(), columns_.end());
-        for (std::size_t m = 0; m < columns_.size(); m += 2)
-          shade_shadow(shadow, polygon, columns_[m],
-                       m + 1 < columns_.size() ? columns_[m + 1] : width, j);
-      }
-    }
-  }
+  for (const std::uint32_t polygon : live_) scan_shadow(polygon);
   shade_eye_planes();
   count_groups();
   flag_near_edges();
   for (int j = band0_; j < band1_; ++j) flag_degenerate(j);
   settle_surface_flags();
+}
+
+/// One shadow polygon over the band's rows. Edge by edge, each over its own
+/// rows in the band, its crossings go to their rows' lists: a side polygon
+/// has four edges, two of them active on a row, and testing every edge on
+/// every row (as the rows were walked first) was a third of this pass's
+/// instructions with 16 lights. A row with more than kRowCrossings
+/// crossings (a clipped or general polygon) takes them again, in columns_.
+void BandWorker::scan_shadow(std::uint32_t polygon) {
+  const int width = scene_.camera.frame.width;
+  const ShadowSpan& span = scene_.shadow_spans[polygon];
+  const ProjectedPolygon& shadow = scene_.polygons[polygon];
+  // Only the rows of its light's window: no count of it is read elsewhere.
+  int j0 = std::max(band0_, span.first), j1 = std::min(band1_, span.last + 1);
+  if (!windows_whole_) {
+    const PixelRect& window = result_.windows.rect(shadow.light);
+    j0 = std::max(j0, window.y0);
+    j1 = std::min(j1, window.y1);
+  }
+  if (j0 >= j1) return;
+  int found[kBandRows] = {};
+  int column[kBandRows][kRowCrossings];
+  for (std::uint32_t n = span.begin; n < span.end; ++n) {
+    const ShadowEdge& e = scene_.shadow_edges[n];
+    const int a = std::max(e.first, j0), b = std::min(e.last + 1, j1);
+    for (int j = a; j < b; ++j) {
+      const int r = j - band0_;
+      const int x = first_column(crossing_x(e.m, e.c, e.edge, j, row_sy_[r]), width);
+      if (found[r] < kRowCrossings) column[r][found[r]] = x;
+      ++found[r];
+    }
+  }
+  for (int j = j0; j < j1; ++j) {
+    const int r = j - band0_;
+    const int n = found[r];
+    if (n == 0) continue;
+    row_base_ = static_cast<std::size_t>(r) * static_cast<std::size_t>(width);
+    // Pixel i is inside when an odd number of the polygon's crossings lie
+    // at columns <= i: the even-odd rule of the span walk, whose spans
+    // start at these columns. So: the pixels between consecutive pairs.
+    int* const c = column[r];
+    if (n == 1) {
+      shade_shadow(shadow, polygon, c[0], width, j);
+    } else if (n == 2) {
+      shade_shadow(shadow, polygon, std::min(c[0], c[1]), std::max(c[0], c[1]), j);
+    } else {
+      std::span<int> row{c, static_cast<std::size_t>(n)};
+      if (n > kRowCrossings) {
+        columns_.clear();
+        for (std::uint32_t k = span.begin; k < span.end; ++k) {
+          const ShadowEdge& e = scene_.shadow_edges[k];
+          if (e.first > j || e.last < j) continue;
+          columns_.push_back(first_column(crossing_x(e.m, e.c, e.edge, j, row_sy_[r]), width));
+        }
+        row = columns_;
+      }
+      std::sort(row.begin(), row.end());
+      for (std::size_t m = 0; m < row.size(); m += 2)
+        shade_shadow(shadow, polygon, row[m], m + 1 < row.size() ? row[m + 1] : width, j);
+    }
+  }
 }
 
 /// Shadow polygon `polygon` covers the pixels [i0, i1) of row j: where a

@@ -46,9 +46,21 @@ void BandWorker::flag_near_edges() {
 void BandWorker::flag_strip(const Strip& strip) {
   const int width = scene_.camera.frame.width;
   const int j0 = std::max(strip.first, band0_), j1 = std::min(strip.last + 1, band1_);
+  // A first test that settles most rows (a strip is a few thousandths of a
+  // pixel wide): u = x − 0.5 in (0, w) farther than half_width + slack
+  // from every integer. The test below would find no column there: its
+  // u_lo and u_hi lie within half_width of u plus the rounding of x −
+  // half_width, x_lo − 0.5 and the like, each under 2·ulp(w) < 1e-15·w,
+  // and frac is u's exact distance above its floor (u − ⌊u⌋ is exact).
+  // A NaN x fails the range test and goes on.
+  const double reach = strip.half_width + 1e-12 + 1e-15 * width;
   for (int j = j0; j < j1; ++j) {
     const double row_y = j + 0.5;
     const double x = strip.x0 + row_y * strip.slope;
+    if (const double u = x - 0.5; u > 0 && u < width) {
+      const double frac = u - static_cast<double>(static_cast<int>(u));
+      if (frac > reach && frac < 1 - reach) continue;
+    }
     const double x_lo = std::max(x - strip.half_width, strip.x_lo);
     const double x_hi = std::min(x + strip.half_width, strip.x_hi);
     // Nearly every strip holds no pixel centre on the row: settle that

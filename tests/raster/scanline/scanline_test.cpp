@@ -620,6 +620,52 @@ TEST(Scanline, TwistedGroupsToggleTheirFlagInsteadOfAddingNbC) {
   EXPECT_GT(both, 4);
 }
 
+/// A comb in the tilted plane z = 2 + y/8, counter-clockwise seen from +z:
+/// a bar along y in [-2, -1] and `teeth` teeth up to y = 2 across
+/// x in [-2.5, 2.5], each followed by a gap as wide.
+std::vector<Vec3> comb(int teeth) {
+  const double step = 5.0 / (2 * teeth - 1);
+  const auto at = [](double x, double y) { return Vec3{x, y, 2 + y / 8}; };
+  const auto x0 = [&](int k) { return -2.5 + 2 * k * step; };
+  std::vector<Vec3> v{at(-2.5, -2), at(2.5, -2)};
+  for (int k = teeth - 1; k >= 0; --k) {
+    v.push_back(at(x0(k) + step, 2));
+    v.push_back(at(x0(k), 2));
+    if (k > 0) {
+      v.push_back(at(x0(k), -1));
+      v.push_back(at(x0(k - 1) + step, -1));
+    }
+  }
+  return v;
+}
+
+TEST(Scanline, ShadowPolygonsCrossingARowManyTimesCountBetweenEveryPair) {
+  // Rows through the teeth cross a comb twice per tooth: 4 crossings (2
+  // teeth) are kept in place, 14 (7 teeth) go through the crowded-row path.
+  const CameraFrame frame = front_camera(96, 64);
+  for (const int teeth : {2, 7}) {
+    RasterPolygon reversed = shadow(comb(teeth), 1, -1, 2);
+    std::reverse(reversed.vertices.begin(), reversed.vertices.end());
+    for (Vec3& v : reversed.vertices) v.x = -v.x / 2, v.z -= 0.5;  // narrower, nearer the floor
+    const std::vector<RasterPolygon> polys{surface(square_z(-4, -4, 4, 4, 0), 3),
+                                           shadow(comb(teeth), 0, 1, 1), reversed};
+    const ScanlineResult r = scanline_render(frame, polys, 2, 2);
+    const int uncertain = expect_matches_reference(frame, polys, 2, r);
+    EXPECT_LT(uncertain, 96 * 4) << teeth << " teeth";
+    // Not vacuous: along the middle row each tooth starts and ends a run of
+    // counted pixels, for both combs.
+    const int j = 24;  // y = 1.25 screen-side at the comb: through the teeth
+    for (std::size_t l = 0; l < 2; ++l) {
+      int runs = 0;
+      for (int i = 1; i < 96; ++i) {
+        const std::size_t p = static_cast<std::size_t>(j) * 96 + i;
+        runs += r.count_at(l, p) != 0 && r.count_at(l, p - 1) == 0;
+      }
+      EXPECT_EQ(runs, teeth) << teeth << " teeth, light " << l;
+    }
+  }
+}
+
 TEST(Scanline, RejectsShadowPolygonOfUnknownGroup) {
   RasterPolygon p = shadow(square_z(-1, -1, 1, 1, 0), 0, 1);
   p.group = 2;
