@@ -30,6 +30,21 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
     const Polygon& polygon = model.polygons[p];
     const PolygonSurface& surface = surfaces[p];
     if (surface.shape == PolygonShape::degenerate) continue;
+    if (polygon.size() == 3) {
+      // A triangle with a surface is planar, and its one fan triangle is
+      // (0, 1, 2) (polygon_surface): its facing is that determinant's sign,
+      // zero when the light lies in its plane (no volume, DESIGN.md), as
+      // the general path below decides it. Read straight from the model:
+      // meshes are mostly triangles, every light asks each one, and the
+      // copy into `points` and the fan's heap block cost more than the
+      // filtered predicate itself.
+      const Vec3& a = model.vertices[polygon[0]];
+      const Vec3& b = model.vertices[polygon[1]];
+      const Vec3& c = model.vertices[polygon[2]];
+      roles[p].facing = light.finite ? orientation(a, b, c, light.v)
+                                     : orientation(a, HPoint::point(b), HPoint::point(c), light);
+      continue;
+    }
     points.clear();
     for (std::uint32_t v : polygon) points.push_back(model.vertices[v]);
     if (surface.shape == PolygonShape::planar) {
@@ -39,13 +54,6 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
       const Sign side = orientation(points[t[0]], HPoint::point(points[t[1]]),
                                     HPoint::point(points[t[2]]), light);
       if (side == Sign::zero) continue;
-      // A triangle's fan is that triangle, (0, 1, 2): its facing is this
-      // very sign, fan_orientation's own call. Meshes are mostly triangles,
-      // and every light asks each one.
-      if (points.size() == 3) {
-        roles[p].facing = side;
-        continue;
-      }
     }
     if (points.size() >= 4 && l_twisted(points, light)) {
       roles[p] = {Sign::positive, true};

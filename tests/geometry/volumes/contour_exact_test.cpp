@@ -1,7 +1,8 @@
 // Contour decisions against exact rational arithmetic: facing of every
 // polygon and the nb_c of every edge of random lattice meshes, under lights
 // placed where decisions degenerate (on a vertex, on an edge's line, in a
-// face's plane, between vertices), at scales from 1e-6 to 1e6.
+// face's plane, between vertices; directional lights along a face), at
+// scales from 1e-6 to 1e6.
 #include <tests/support/rational_vec.h>
 #include <umbra/geometry/volumes/contour.h>
 
@@ -17,17 +18,18 @@ using namespace test;
 
 /// Facing of a planar polygon seen from L, by the exact area vector:
 /// sign(N · (L - v0)) with N = Σ (v_k - v0) × (v_{k+1} - v0).
-Sign reference_facing(const std::vector<Vec3>& v, const Vec3& light) {
+/// For a light at infinity (a directional light), sign(N · direction).
+Sign reference_facing(const std::vector<Vec3>& v, const HPoint& light) {
   QV n{0, 0, 0};
   for (std::size_t k = 1; k + 1 < v.size(); ++k)
     n = n + cross(q(v[k]) - q(v[0]), q(v[k + 1]) - q(v[0]));
-  return sign_of(dot(n, q(light) - q(v[0])));
+  return sign_of(dot(n, light.finite ? q(light.v) - q(v[0]) : q(light.v)));
 }
 
 /// Edge nb_c values by the definition of contour.h, keyed by the undirected
 /// vertex pair (positions are distinct on the lattice), along (min, max).
 std::map<std::pair<std::uint32_t, std::uint32_t>, int> reference_weights(const Model& m,
-                                                                         const Vec3& light) {
+                                                                         const HPoint& light) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> w;
   for (const Polygon& p : m.polygons) {
     std::vector<Vec3> v;
@@ -46,7 +48,7 @@ std::map<std::pair<std::uint32_t, std::uint32_t>, int> reference_weights(const M
 
 TEST(ContourExact, WeightsEqualRationalArithmeticOnDegenerateLatticeMeshes) {
   std::mt19937_64 rng(424242);
-  int compared = 0, degenerate_lights = 0, nonzero = 0;
+  int compared = 0, degenerate_lights = 0, degenerate_directions = 0, nonzero = 0;
   for (const double scale : {1e-6, 1.0 / 1024, 1.0, 1e3, 1e6}) {
     for (int trial = 0; trial < 300; ++trial) {
       // A 3x3x3 lattice, scaled: coincidences (coplanar, collinear) are common.
@@ -85,27 +87,33 @@ TEST(ContourExact, WeightsEqualRationalArithmeticOnDegenerateLatticeMeshes) {
           light = 0.5 * (p0 + p1) + Vec3{0.25 * scale, 0.5 * scale, 0.125 * scale};
           break;
       }
-      const auto expected = reference_weights(m, light);
-      std::map<std::pair<std::uint32_t, std::uint32_t>, int> got;
-      for (const ContourEdge& e : contour_edges(m, HPoint::point(light))) {
-        ASSERT_GT(e.nb_c, 0);
-        const bool forward = e.from < e.to;
-        got[{std::min(e.from, e.to), std::max(e.from, e.to)}] = forward ? e.nb_c : -e.nb_c;
+      // And a directional light: along an edge of the face (in its plane)
+      // half the time, else off it.
+      const Vec3 direction = rng() % 2 ? p1 - p0 : (p1 - p0) + Vec3{0, 0.5 * scale, 0.25 * scale};
+      for (const HPoint& lamp : {HPoint::point(light), HPoint::at_infinity(direction)}) {
+        const auto expected = reference_weights(m, lamp);
+        std::map<std::pair<std::uint32_t, std::uint32_t>, int> got;
+        for (const ContourEdge& e : contour_edges(m, lamp)) {
+          ASSERT_GT(e.nb_c, 0);
+          const bool forward = e.from < e.to;
+          got[{std::min(e.from, e.to), std::max(e.from, e.to)}] = forward ? e.nb_c : -e.nb_c;
+        }
+        ASSERT_EQ(got, expected) << "scale " << scale << " trial " << trial;
+        for (const Polygon& p : m.polygons) {
+          const std::vector<Vec3> v{m.vertices[p[0]], m.vertices[p[1]], m.vertices[p[2]]};
+          const Sign f = polygon_facing(m, p, lamp);
+          ASSERT_EQ(f, reference_facing(v, lamp));
+          (lamp.finite ? degenerate_lights : degenerate_directions) += f == Sign::zero;
+        }
+        nonzero += !expected.empty();
+        ++compared;
       }
-      ASSERT_EQ(got, expected) << "scale " << scale << " trial " << trial;
-      for (const Polygon& p : m.polygons) {
-        const std::vector<Vec3> v{m.vertices[p[0]], m.vertices[p[1]], m.vertices[p[2]]};
-        const Sign f = polygon_facing(m, p, HPoint::point(light));
-        ASSERT_EQ(f, reference_facing(v, light));
-        degenerate_lights += f == Sign::zero;
-      }
-      nonzero += !expected.empty();
-      ++compared;
     }
   }
-  EXPECT_GT(compared, 1000);
+  EXPECT_GT(compared, 2000);
   EXPECT_GT(degenerate_lights, 500);  // lights in faces' planes really happen
-  EXPECT_GT(nonzero, 500);
+  EXPECT_GT(degenerate_directions, 500);
+  EXPECT_GT(nonzero, 1000);
 }
 
 }  // namespace
