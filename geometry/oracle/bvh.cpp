@@ -82,6 +82,16 @@ namespace {
 /// ray) against the box widened by `slack`. The widening must exceed the
 /// rounding error of this test, which is relative to the magnitudes involved:
 /// the caller's slack plus 1e-9 of the coordinates' size covers it with room.
+///
+/// With `group`, the test of a box that holds others (Bvh::group_boxes)
+/// passes whenever the plain test passes for any box it holds: its pad is
+/// at least theirs (a larger scale), its slab interval [ta, tb] holds
+/// theirs (every step rounds monotonically), and the parameter interval
+/// is widened by 2e-9·max(|ta|, |tb|), at least any held box's 1e-9·(|ta'|
+/// + |tb'|) since both lie within its own interval. (The plain widening is
+/// not monotone: [-1, 6] is widened less than [5, 6].) So s0 and s1 stay
+/// at or below, and at or above, any held box's on every axis.
+template <bool group>
 bool meets(const Box& box, const Vec3& from, const Vec3& dir, double s_max, double slack) {
   double s0 = 0, s1 = s_max;
   for (int a = 0; a < 3; ++a) {
@@ -96,7 +106,9 @@ bool meets(const Box& box, const Vec3& from, const Vec3& dir, double s_max, doub
     double ta = (lo - o) / d, tb = (hi - o) / d;
     if (ta > tb) std::swap(ta, tb);
     // Widen the parameter interval too: the divisions round.
-    const double widen = 1e-9 * (std::abs(ta) + std::abs(tb)) + 1e-300;
+    const double widen =
+        1e-9 * (group ? 2 * std::max(std::abs(ta), std::abs(tb)) : std::abs(ta) + std::abs(tb)) +
+        1e-300;
     s0 = std::max(s0, ta - widen);
     s1 = std::min(s1, tb + widen);
     if (s0 > s1) return false;
@@ -121,13 +133,49 @@ void Bvh::scan_segment(const std::vector<Box>& boxes, const Vec3& from, const Ve
   const Vec3 dir = to_is_direction ? to : to - from;
   const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
-    if (meets(boxes[i], from, dir, s_max, slack)) out.push_back(i);
+    if (meets<false>(boxes[i], from, dir, s_max, slack)) out.push_back(i);
 }
 
 void Bvh::scan_box(const std::vector<Box>& boxes, const Box& box, double slack,
                    std::vector<std::uint32_t>& out) {
   for (std::uint32_t i = 0; i < boxes.size(); ++i)
     if (overlaps(boxes[i], box, slack)) out.push_back(i);
+}
+
+std::vector<Box> Bvh::group_boxes(const std::vector<Box>& boxes) {
+  std::vector<Box> groups;
+  groups.reserve((boxes.size() + kScanGroup - 1) / kScanGroup);
+  for (std::size_t first = 0; first < boxes.size(); first += kScanGroup) {
+    Box group;  // in registers, not stored back at every member
+    const std::size_t end = std::min<std::size_t>(first + kScanGroup, boxes.size());
+    for (std::size_t i = first; i < end; ++i) group.extend(boxes[i]);
+    groups.push_back(group);
+  }
+  return groups;
+}
+
+void Bvh::scan_segment(const std::vector<Box>& boxes, const std::vector<Box>& groups,
+                       const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
+                       std::vector<std::uint32_t>& out) {
+  const Vec3 dir = to_is_direction ? to : to - from;
+  const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
+  for (std::uint32_t g = 0; g < groups.size(); ++g) {
+    if (!meets<true>(groups[g], from, dir, s_max, slack)) continue;
+    const std::uint32_t end = std::min<std::uint32_t>((g + 1) * kScanGroup, boxes.size());
+    for (std::uint32_t i = g * kScanGroup; i < end; ++i)
+      if (meets<false>(boxes[i], from, dir, s_max, slack)) out.push_back(i);
+  }
+}
+
+void Bvh::scan_box(const std::vector<Box>& boxes, const std::vector<Box>& groups, const Box& box,
+                   double slack, std::vector<std::uint32_t>& out) {
+  // overlaps is monotone as it stands: a larger box has a larger pad.
+  for (std::uint32_t g = 0; g < groups.size(); ++g) {
+    if (!overlaps(groups[g], box, slack)) continue;
+    const std::uint32_t end = std::min<std::uint32_t>((g + 1) * kScanGroup, boxes.size());
+    for (std::uint32_t i = g * kScanGroup; i < end; ++i)
+      if (overlaps(boxes[i], box, slack)) out.push_back(i);
+  }
 }
 
 void Bvh::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {
@@ -138,7 +186,7 @@ void Bvh::query_segment(const Vec3& from, const Vec3& to, bool to_is_direction, 
                         std::vector<std::uint32_t>& out) const {
   const Vec3 dir = to_is_direction ? to : to - from;
   const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
-  query_if([&](const Box& b) { return meets(b, from, dir, s_max, slack); }, out);
+  query_if([&](const Box& b) { return meets<false>(b, from, dir, s_max, slack); }, out);
 }
 
 }  // namespace umbra::geometry

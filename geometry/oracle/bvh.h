@@ -59,6 +59,21 @@ class Bvh {
   static void scan_box(const std::vector<Box>& boxes, const Box& box, double slack,
                        std::vector<std::uint32_t>& out);
 
+  /// Boxes kScanGroup at a time in index order, each group's box bounding
+  /// its members'. The scans below test a group's box first and its members
+  /// only where that passes, with a group test that passes wherever a
+  /// member's would: the same items in the same order as the plain scans,
+  /// and on a mesh, whose consecutive triangles lie side by side, a segment
+  /// through a corner of the scene tests few members (a scan was ~7.6 M
+  /// instructions on bunny00's 70k triangles, and a frame asks up to 32).
+  static constexpr std::uint32_t kScanGroup = 64;
+  static std::vector<Box> group_boxes(const std::vector<Box>& boxes);
+  static void scan_segment(const std::vector<Box>& boxes, const std::vector<Box>& groups,
+                           const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
+                           std::vector<std::uint32_t>& out);
+  static void scan_box(const std::vector<Box>& boxes, const std::vector<Box>& groups,
+                       const Box& box, double slack, std::vector<std::uint32_t>& out);
+
  private:
   struct Node {
     Box box;

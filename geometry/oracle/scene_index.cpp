@@ -34,6 +34,7 @@ SceneIndex::SceneIndex(const Scene& scene, std::span<const ModelTables> tables)
       polygons_.push_back({m, p, &surface, model.casts_shadows});
     }
   }
+  groups_ = Bvh::group_boxes(boxes_);
   bounds_ = scene_bounds(scene);
   for (int a = 0; a < 3; ++a)
     magnitude_ = std::max({magnitude_, std::abs(bounds_.lo[a]), std::abs(bounds_.hi[a])});
@@ -65,14 +66,14 @@ void SceneIndex::query_segment(const Vec3& from, const Vec3& to, bool to_is_dire
   if (const Bvh* bvh = tree())
     bvh->query_segment(from, to, to_is_direction, slack, out);
   else
-    Bvh::scan_segment(boxes_, from, to, to_is_direction, slack, out);
+    Bvh::scan_segment(boxes_, groups_, from, to, to_is_direction, slack, out);
 }
 
 void SceneIndex::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {
   if (const Bvh* bvh = tree())
     bvh->query_box(box, slack, out);
   else
-    Bvh::scan_box(boxes_, box, slack, out);
+    Bvh::scan_box(boxes_, groups_, box, slack, out);
 }
 
 }  // namespace umbra::geometry

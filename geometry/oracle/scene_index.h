@@ -93,6 +93,7 @@ class SceneIndex {
   std::vector<IndexedPolygon> polygons_;
   std::vector<std::vector<PolygonSurface>> owned_;  ///< per model, where none was given
   std::vector<Box> boxes_;                          ///< boxes_[i] bounds polygons_[i]
+  std::vector<Box> groups_;                         ///< Bvh::group_boxes(boxes_): for the scans
   struct LazyBvh {
     std::atomic<std::uint32_t> queries{0};
     std::atomic<bool> built{false};  ///< past the scans: no counting, no call_once

@@ -51,6 +51,9 @@ TEST(Bvh, FindsWhatAScanFinds) {
     Bvh::scan_box(boxes, query, 0.0, scanned);
     std::sort(found.begin(), found.end());
     EXPECT_EQ(found, scanned) << q;
+    std::vector<std::uint32_t> grouped;
+    Bvh::scan_box(boxes, Bvh::group_boxes(boxes), query, 0.0, grouped);
+    EXPECT_EQ(grouped, scanned) << q;
   }
 }
 
@@ -124,14 +127,31 @@ TEST(Bvh, SegmentQueriesKeepEveryBoxTheSegmentMeetsExactly) {
     const Vec3 to = q % 2 == 0 ? target.lo : Vec3{at(rng), at(rng), at(rng)};
     queries.push_back({from, q % 3 == 0 ? to - from : to, q % 3 == 0});
   }
-  std::size_t met = 0, kept = 0;
+  // The grouped scan finds what the plain one does, item for item, with
+  // the boxes as they come (groups as large as the scene) and sorted along
+  // x (groups a sliver each, which most queries miss).
+  std::vector<Box> sorted = boxes;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const Box& a, const Box& b) { return a.lo.x < b.lo.x; });
+  const std::vector<Box> groups = Bvh::group_boxes(boxes), sorted_groups = Bvh::group_boxes(sorted);
+  std::size_t met = 0, kept = 0, members_tested = 0;
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const SegmentQuery& s = queries[q];
-    std::vector<std::uint32_t> found, scanned;
+    std::vector<std::uint32_t> found, scanned, grouped, sorted_scanned, sorted_grouped;
     tree.query_segment(s.from, s.to, s.ray, 0.0, found);
     Bvh::scan_segment(boxes, s.from, s.to, s.ray, 0.0, scanned);
     std::sort(found.begin(), found.end());
     EXPECT_EQ(found, scanned) << q;
+    Bvh::scan_segment(boxes, groups, s.from, s.to, s.ray, 0.0, grouped);
+    EXPECT_EQ(grouped, scanned) << q;
+    Bvh::scan_segment(sorted, s.from, s.to, s.ray, 0.0, sorted_scanned);
+    Bvh::scan_segment(sorted, sorted_groups, s.from, s.to, s.ray, 0.0, sorted_grouped);
+    EXPECT_EQ(sorted_grouped, sorted_scanned) << q;
+    for (const Box& g : sorted_groups) {
+      std::vector<std::uint32_t> one;
+      Bvh::scan_segment({g}, s.from, s.to, s.ray, 0.0, one);
+      members_tested += one.empty() ? 0 : Bvh::kScanGroup;
+    }
     for (std::uint32_t i = 0; i < boxes.size(); ++i) {
       if (!segment_meets_exactly(boxes[i], s.from, s.to, s.ray)) continue;
       ++met;
@@ -142,6 +162,51 @@ TEST(Bvh, SegmentQueriesKeepEveryBoxTheSegmentMeetsExactly) {
   }
   EXPECT_GT(met, 500u);
   EXPECT_LE(kept, met + met / 50);
+  // Not vacuous: on the sorted boxes most groups are passed over.
+  EXPECT_LT(members_tested, queries.size() * sorted.size() / 2);
+}
+
+TEST(Bvh, GroupedScansFindWhatThePlainScansFind) {
+  // Ten groups of small boxes in a row along x, and in each a box far off
+  // the row (above it, or behind it and touching the row's end): a group's
+  // box must hold its outliers, and a query along an outlier's face, edge
+  // or corner finds it in both scans.
+  std::vector<Box> boxes;
+  for (std::uint32_t i = 0; i < 10 * Bvh::kScanGroup; ++i) {
+    const double x = i;
+    if (i % Bvh::kScanGroup == 37)
+      boxes.push_back(box_of({x, 50, 0}, {x + 0.5, 50.5, 0.5}));
+    else if (i % Bvh::kScanGroup == 63)
+      boxes.push_back(box_of({x, 0, -50}, {x + 0.5, 0.5, -49.5}));
+    else
+      boxes.push_back(box_of({x, 0, 0}, {x + 0.5, 0.5, 0.5}));
+  }
+  const std::vector<Box> groups = Bvh::group_boxes(boxes);
+  ASSERT_EQ(groups.size(), 10u);
+  std::size_t found_outliers = 0;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    if (i % Bvh::kScanGroup != 37 && i % Bvh::kScanGroup != 63) continue;
+    const Box& b = boxes[i];
+    const std::vector<SegmentQuery> queries{
+        {b.hi + Vec3{0, 10, 0}, b.hi, false},                    // ends on the corner
+        {Vec3{b.lo.x, 100, b.lo.z}, Vec3{0, -1, 0}, true},       // down the edge
+        {Vec3{b.lo.x - 3, b.hi.y, 0.25 + b.lo.z}, b.hi, false},  // along the top face
+    };
+    for (const SegmentQuery& s : queries) {
+      std::vector<std::uint32_t> plain, grouped;
+      Bvh::scan_segment(boxes, s.from, s.to, s.ray, 0.0, plain);
+      Bvh::scan_segment(boxes, groups, s.from, s.to, s.ray, 0.0, grouped);
+      EXPECT_EQ(grouped, plain) << i;
+      found_outliers += std::binary_search(grouped.begin(), grouped.end(), i);
+    }
+    std::vector<std::uint32_t> plain, grouped;
+    const Box touching = box_of(b.hi, b.hi + Vec3{1, 1, 1});
+    Bvh::scan_box(boxes, touching, 0.0, plain);
+    Bvh::scan_box(boxes, groups, touching, 0.0, grouped);
+    EXPECT_EQ(grouped, plain) << i;
+    found_outliers += std::binary_search(grouped.begin(), grouped.end(), i);
+  }
+  EXPECT_EQ(found_outliers, 20u * 4);
 }
 
 TEST(Bvh, LargeBoxesSitBesideTheRestNearTheRoot) {
