@@ -66,7 +66,7 @@ class Bvh {
   /// and on a mesh, whose consecutive triangles lie side by side, a segment
   /// through a corner of the scene tests few members (a scan was ~7.6 M
   /// instructions on bunny00's 70k triangles, and a frame asks up to 32).
-  static constexpr std::uint32_t kScanGroup = 64;
+  static constexpr std::uint32_t kScanGroup = 16;
   static std::vector<Box> group_boxes(const std::vector<Box>& boxes);
   static void scan_segment(const std::vector<Box>& boxes, const std::vector<Box>& groups,
                            const Vec3& from, const Vec3& to, bool to_is_direction, double slack,

@@ -171,12 +171,13 @@ TEST(Bvh, GroupedScansFindWhatThePlainScansFind) {
   // the row (above it, or behind it and touching the row's end): a group's
   // box must hold its outliers, and a query along an outlier's face, edge
   // or corner finds it in both scans.
+  const std::uint32_t up = Bvh::kScanGroup / 2 + 1, back = Bvh::kScanGroup - 1;
   std::vector<Box> boxes;
   for (std::uint32_t i = 0; i < 10 * Bvh::kScanGroup; ++i) {
     const double x = i;
-    if (i % Bvh::kScanGroup == 37)
+    if (i % Bvh::kScanGroup == up)
       boxes.push_back(box_of({x, 50, 0}, {x + 0.5, 50.5, 0.5}));
-    else if (i % Bvh::kScanGroup == 63)
+    else if (i % Bvh::kScanGroup == back)
       boxes.push_back(box_of({x, 0, -50}, {x + 0.5, 0.5, -49.5}));
     else
       boxes.push_back(box_of({x, 0, 0}, {x + 0.5, 0.5, 0.5}));
@@ -185,7 +186,7 @@ TEST(Bvh, GroupedScansFindWhatThePlainScansFind) {
   ASSERT_EQ(groups.size(), 10u);
   std::size_t found_outliers = 0;
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    if (i % Bvh::kScanGroup != 37 && i % Bvh::kScanGroup != 63) continue;
+    if (i % Bvh::kScanGroup != up && i % Bvh::kScanGroup != back) continue;
     const Box& b = boxes[i];
     const std::vector<SegmentQuery> queries{
         {b.hi + Vec3{0, 10, 0}, b.hi, false},                    // ends on the corner
