@@ -4,6 +4,7 @@
 #include <umbra/util/parallel_for.h>
 
 #include <cmath>
+#include <memory>
 
 namespace umbra::raster {
 
@@ -83,8 +84,10 @@ void add_entries(const geometry::SceneIndex& index, std::uint32_t i, std::size_t
                  SurfaceTable& table) {
   const geometry::IndexedPolygon& p = index.polygons()[i];
   const auto add = [&](std::uint32_t triangle, std::vector<Vec3> vertices) {
-    table.entries[slot] = surface_entry(
-        index, geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false});
+    std::construct_at(
+        &table.entries[slot],
+        surface_entry(index,
+                      geometry::SurfaceHit{.polygon = i, .triangle = triangle, .boundary = false}));
     RasterPolygon& raster = table.polygons[slot];
     raster.vertices = std::move(vertices);
     raster.kind = RasterPolygon::Kind::surface;
@@ -126,7 +129,7 @@ SurfaceTable surface_table(const geometry::SceneIndex& index, unsigned threads) 
   for (std::size_t i = 0; i < polygons.size(); ++i)
     first[i + 1] = first[i] + entries_of(polygons[i]);
   SurfaceTable table;
-  table.entries.resize(first.back());
+  table.entries = util::UnconstructedArray<SurfaceEntry>(first.back());
   table.polygons.resize(first.back());
   constexpr std::size_t kBlock = 2048;
   util::parallel_for_blocks(polygons.size(), kBlock, threads,
