@@ -72,9 +72,10 @@ void BandWorker::scan_shadows() {
 /// One shadow polygon over the band's rows. Edge by edge, each over its own
 /// rows in the band, its crossings go to their rows' lists: a side polygon
 /// has four edges, two of them active on a row, and testing every edge on
-/// every row (as the rows were walked first) was a third of this pass's
-/// instructions with 16 lights. A row with more than kRowCrossings
-/// crossings (a clipped or general polygon) takes them again, in columns_.
+/// every row (as the rows were walked first) cost a tenth of this walk's
+/// instructions with 16 lights (bunny00: 1,310 -> 1,172 M). A row with
+/// more than kRowCrossings crossings (a clipped or general polygon) takes
+/// them again, in columns_.
 void BandWorker::scan_shadow(std::uint32_t polygon) {
   const int width = scene_.camera.frame.width;
   const ShadowSpan& span = scene_.shadow_spans[polygon];
