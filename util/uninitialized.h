@@ -48,8 +48,7 @@ using UninitializedVector = std::vector<T, DefaultInitAllocator<T>>;
 /// Room for n T's (in huge pages when large) of which none is constructed:
 /// the owner constructs each element it will read (std::construct_at or
 /// placement new), from any thread, where a vector would first construct
-/// them all on one. For
-/// types whose default constructor writes (default member initializers),
+/// them all on one. For types whose default constructor writes (default member initializers),
 /// which UninitializedVector cannot skip: the scanline's 176-byte projected
 /// polygons and its edge store's 88-byte slots, tens of MB a frame, were
 /// written twice, the first time serially. Nothing is destroyed, so T must

@@ -42,8 +42,7 @@ Sign orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
                                      K::Point_3(c.x, c.y, c.z), K::Point_3(d.x, d.y, d.z)));
 }
 
-Sign orientation(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d) {
-  if (b.finite && c.finite && d.finite) return orientation(a, b.v, c.v, d.v);
+Sign orientation_at_infinity(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d) {
   // A point at infinity (a sample ray's direction, a directional light):
   // plain doubles first, as CGAL's static filter does for finite points.
   if (const std::optional<Sign> sign =

@@ -38,8 +38,16 @@ struct HPoint {
 /// For four finite points this is CGAL::orientation(a, b, c, d): POSITIVE for
 /// (0,0,0), (1,0,0), (0,1,0), (0,0,1), i.e. d lies on the side of plane (a,b,c)
 /// towards which the normal (b - a) × (c - a) points.
-Sign orientation(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d);
 Sign orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+/// The same with a point at infinity among b, c, d.
+Sign orientation_at_infinity(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d);
+/// Inline: with finite points it is the four-point predicate, and hot
+/// callers (every triangle's facing, per light) need not pay a call to
+/// learn that.
+inline Sign orientation(const Vec3& a, const HPoint& b, const HPoint& c, const HPoint& d) {
+  if (b.finite && c.finite && d.finite) return orientation(a, b.v, c.v, d.v);
+  return orientation_at_infinity(a, b, c, d);
+}
 
 /// The sample point of DESIGN.md: P = H - ε·d for an infinitesimal ε > 0, where
 /// H = eye + t·d is the point where the ray meets the plane of the hit triangle

@@ -154,28 +154,38 @@ std::vector<Box> Bvh::group_boxes(const std::vector<Box>& boxes) {
   return groups;
 }
 
+namespace {
+
+/// The members of the groups `keep_group` passes that `keep` passes, in
+/// index order.
+template <class KeepGroup, class Keep>
+void scan_groups(const std::vector<Box>& boxes, const std::vector<Box>& groups,
+                 const KeepGroup& keep_group, const Keep& keep, std::vector<std::uint32_t>& out) {
+  for (std::uint32_t g = 0; g < groups.size(); ++g) {
+    if (!keep_group(groups[g])) continue;
+    const std::uint32_t end = std::min<std::uint32_t>((g + 1) * Bvh::kScanGroup, boxes.size());
+    for (std::uint32_t i = g * Bvh::kScanGroup; i < end; ++i)
+      if (keep(boxes[i])) out.push_back(i);
+  }
+}
+
+}  // namespace
+
 void Bvh::scan_segment(const std::vector<Box>& boxes, const std::vector<Box>& groups,
                        const Vec3& from, const Vec3& to, bool to_is_direction, double slack,
                        std::vector<std::uint32_t>& out) {
   const Vec3 dir = to_is_direction ? to : to - from;
   const double s_max = to_is_direction ? std::numeric_limits<double>::infinity() : 1.0;
-  for (std::uint32_t g = 0; g < groups.size(); ++g) {
-    if (!meets<true>(groups[g], from, dir, s_max, slack)) continue;
-    const std::uint32_t end = std::min<std::uint32_t>((g + 1) * kScanGroup, boxes.size());
-    for (std::uint32_t i = g * kScanGroup; i < end; ++i)
-      if (meets<false>(boxes[i], from, dir, s_max, slack)) out.push_back(i);
-  }
+  scan_groups(
+      boxes, groups, [&](const Box& b) { return meets<true>(b, from, dir, s_max, slack); },
+      [&](const Box& b) { return meets<false>(b, from, dir, s_max, slack); }, out);
 }
 
 void Bvh::scan_box(const std::vector<Box>& boxes, const std::vector<Box>& groups, const Box& box,
                    double slack, std::vector<std::uint32_t>& out) {
   // overlaps is monotone as it stands: a larger box has a larger pad.
-  for (std::uint32_t g = 0; g < groups.size(); ++g) {
-    if (!overlaps(groups[g], box, slack)) continue;
-    const std::uint32_t end = std::min<std::uint32_t>((g + 1) * kScanGroup, boxes.size());
-    for (std::uint32_t i = g * kScanGroup; i < end; ++i)
-      if (overlaps(boxes[i], box, slack)) out.push_back(i);
-  }
+  const auto keep = [&](const Box& b) { return overlaps(b, box, slack); };
+  scan_groups(boxes, groups, keep, keep, out);
 }
 
 void Bvh::query_box(const Box& box, double slack, std::vector<std::uint32_t>& out) const {

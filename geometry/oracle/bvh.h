@@ -51,9 +51,9 @@ class Bvh {
   std::size_t size() const { return boxes_.size(); }
 
   /// The same queries over `boxes` without a tree, item by item in index
-  /// order: for a few queries, cheaper than building one. The candidates are
-  /// those the tree finds (up to the rounding of the tests, which the
-  /// widening covers either way).
+  /// order: the candidates are those the tree finds (up to the rounding of
+  /// the tests, which the widening covers either way). The scene index scans
+  /// by groups (below); these are the reference its tests compare with.
   static void scan_segment(const std::vector<Box>& boxes, const Vec3& from, const Vec3& to,
                            bool to_is_direction, double slack, std::vector<std::uint32_t>& out);
   static void scan_box(const std::vector<Box>& boxes, const Box& box, double slack,

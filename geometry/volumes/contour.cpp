@@ -38,11 +38,9 @@ std::vector<PolygonRole> polygon_roles(const Model& model, std::span<const Polyg
       // meshes are mostly triangles, every light asks each one, and the
       // copy into `points` and the fan's heap block cost more than the
       // filtered predicate itself.
-      const Vec3& a = model.vertices[polygon[0]];
-      const Vec3& b = model.vertices[polygon[1]];
-      const Vec3& c = model.vertices[polygon[2]];
-      roles[p].facing = light.finite ? orientation(a, b, c, light.v)
-                                     : orientation(a, HPoint::point(b), HPoint::point(c), light);
+      roles[p].facing =
+          orientation(model.vertices[polygon[0]], HPoint::point(model.vertices[polygon[1]]),
+                      HPoint::point(model.vertices[polygon[2]]), light);
       continue;
     }
     points.clear();

@@ -88,6 +88,9 @@ void BandWorker::scan_shadow(std::uint32_t polygon) {
     j1 = std::min(j1, window.y1);
   }
   if (j0 >= j1) return;
+  const auto column_of = [&](const ShadowEdge& e, int j) {
+    return first_column(crossing_x(e.m, e.c, e.edge, j, row_sy_[j - band0_]), width);
+  };
   int found[kBandRows] = {};
   int column[kBandRows][kRowCrossings];
   for (std::uint32_t n = span.begin; n < span.end; ++n) {
@@ -95,7 +98,7 @@ void BandWorker::scan_shadow(std::uint32_t polygon) {
     const int a = std::max(e.first, j0), b = std::min(e.last + 1, j1);
     for (int j = a; j < b; ++j) {
       const int r = j - band0_;
-      const int x = first_column(crossing_x(e.m, e.c, e.edge, j, row_sy_[r]), width);
+      const int x = column_of(e, j);
       if (found[r] < kRowCrossings) column[r][found[r]] = x;
       ++found[r];
     }
@@ -119,8 +122,7 @@ void BandWorker::scan_shadow(std::uint32_t polygon) {
         columns_.clear();
         for (std::uint32_t k = span.begin; k < span.end; ++k) {
           const ShadowEdge& e = scene_.shadow_edges[k];
-          if (e.first > j || e.last < j) continue;
-          columns_.push_back(first_column(crossing_x(e.m, e.c, e.edge, j, row_sy_[r]), width));
+          if (e.first <= j && j <= e.last) columns_.push_back(column_of(e, j));
         }
         row = columns_;
       }
